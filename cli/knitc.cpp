@@ -1,0 +1,134 @@
+// knitc: the command line. The only place that wires runtime, compiler and writers.
+// Exit codes: 0 success, 1 a problem in the pattern, 2 bad command-line use.
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+#include <glm/common.hpp>
+
+#include "compile.hpp"
+#include "runtime.hpp"
+#include "writers/writers.hpp"
+
+namespace {
+
+constexpr int exit_pattern = 1;
+constexpr int exit_usage = 2;
+
+struct BuildArgs {
+  std::string pattern;
+  std::string output;
+  std::string centreline;
+  knitc::CompileOptions compile;
+  bool stats = false;
+  bool quiet = false;
+};
+
+void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric) {
+  std::size_t vertices = 0, elements = 0;
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const auto& p : fabric.mesh.primitives) {
+    vertices += p.positions.size();
+    elements += p.indices.size();
+    for (const auto& v : p.positions) {
+      lo = glm::min(lo, v);
+      hi = glm::max(hi, v);
+    }
+  }
+  std::size_t samples = 0;
+  for (const auto& piece : fabric.pieces) samples += piece.samples.size();
+  fmt::print(stderr, "pattern     {}\n", pattern.name);
+  fmt::print(stderr, "courses     {}\nwales       {}\nloops       {}\n", fabric.layout.courses,
+             fabric.layout.wales, fabric.layout.loops.size());
+  fmt::print(stderr, "yarn pieces {}\nsamples     {}\nvertices    {}\nindices     {}\n",
+             fabric.pieces.size(), samples, vertices, elements);
+  fmt::print(stderr, "bounds mm   [{:.3f}, {:.3f}, {:.3f}] .. [{:.3f}, {:.3f}, {:.3f}]\n", lo.x, lo.y, lo.z,
+             hi.x, hi.y, hi.z);
+}
+
+int build(const BuildArgs& args) {
+  knitc::Pattern pattern;
+  try {
+    pattern = knitc::runtime::run_pattern_file(args.pattern);
+  } catch (const knitc::runtime::PatternError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    return exit_pattern;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "knitc: {}\n", e.what());
+    return exit_usage;
+  }
+  const knitc::Fabric fabric = knitc::compile(pattern, args.compile);
+  std::vector<knitc::writers::OutputFile> files;
+  files.push_back({args.output, knitc::writers::glb(fabric.mesh, "knitc " KNITC_VERSION)});
+  if (!args.centreline.empty())
+    files.push_back({args.centreline, knitc::writers::centreline_json(pattern, fabric, args.compile.loop_model)});
+  try {
+    knitc::writers::write_files(files);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "knitc: {}\n", e.what());
+    return exit_usage;
+  }
+  if (args.stats) print_stats(pattern, fabric);
+  if (!args.quiet && !args.stats) {
+    fmt::print(stderr, "knitc: wrote {} ({} loops)\n", args.output, fabric.layout.loops.size());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"knitc: compiles knitting pattern scripts into yarn-level 3D fabric", "knitc"};
+  app.set_version_flag("--version", "knitc " KNITC_VERSION);
+  app.require_subcommand(1);
+
+  BuildArgs b;
+  auto* cmd = app.add_subcommand("build", "compile a pattern script into a glTF binary (.glb)");
+  cmd->add_option("pattern", b.pattern, "the pattern script (.lua)")->required();
+  cmd->add_option("-o,--output", b.output, "the .glb to write")->required();
+  const std::map<std::string, knitc::yarn_paths::LoopModel> models{
+      {"paper", knitc::yarn_paths::LoopModel::paper}, {"smooth", knitc::yarn_paths::LoopModel::smooth}};
+  cmd->add_option("--loop-model", b.compile.loop_model,
+                  "smooth: one C2 curve per course (default); paper: the seed paper's curve per loop")
+      ->transform(CLI::CheckedTransformer(models, CLI::ignore_case));
+  const std::map<std::string, knitc::View> views{
+      {"surface", knitc::View::surface}, {"wireframe", knitc::View::wireframe}, {"centreline", knitc::View::centreline}};
+  cmd->add_option("--view", b.compile.view, "surface (default), wireframe or centreline")
+      ->transform(CLI::CheckedTransformer(views, CLI::ignore_case));
+  const std::map<std::string, knitc::nurbs::Parametrisation> params{
+      {"chord", knitc::nurbs::Parametrisation::chord_length},
+      {"centripetal", knitc::nurbs::Parametrisation::centripetal}};
+  cmd->add_option("--parameters", b.compile.parametrisation, "data point parameters: chord (default) or centripetal")
+      ->transform(CLI::CheckedTransformer(params, CLI::ignore_case));
+  cmd->add_option("--centreline", b.centreline, "also write the centrelines and loop data points as JSON (mm)");
+  cmd->add_option("--sides", b.compile.sides, "vertices around each tube ring (default 12)")->check(CLI::Range(3, 256));
+  cmd->add_option("--tolerance", b.compile.chord_tolerance,
+                  "chord error of the tube surface, as a fraction of the yarn diameter (default 0.01)")
+      ->check(CLI::Range(1e-4, 1.0));
+  cmd->add_flag("--stats", b.stats, "print counts and bounds of the result");
+  cmd->add_flag("-q,--quiet", b.quiet, "print nothing on success");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return exit_usage;
+  }
+  if (!b.centreline.empty() && b.centreline == b.output) {
+    fmt::print(stderr, "knitc: --centreline and -o name the same file\n");
+    return exit_usage;
+  }
+  if (cmd->parsed()) return build(b);
+  return exit_usage;
+}

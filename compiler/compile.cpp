@@ -1,0 +1,111 @@
+#include "compile.hpp"
+
+#include <cassert>
+#include <cmath>
+#include <cstdlib>
+
+namespace knitc {
+
+sweep::FrameKind frame_kind(yarn_paths::LoopModel model) {
+  return model == yarn_paths::LoopModel::paper ? sweep::FrameKind::frenet
+                                               : sweep::FrameKind::rotation_minimising;
+}
+
+glm::vec3 linear_rgb(const std::string& hex) {
+  assert(hex.size() == 7 && hex[0] == '#');
+  glm::vec3 rgb;
+  for (int i = 0; i < 3; ++i) {
+    const double s = static_cast<double>(std::strtol(hex.substr(1 + 2 * i, 2).c_str(), nullptr, 16)) / 255.0;
+    rgb[i] = static_cast<float>(s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4));
+  }
+  return rgb;
+}
+
+namespace {
+
+CurvePiece trace_curve(yarn_paths::Piece path, const Pattern& pattern, const CompileOptions& options) {
+  CurvePiece piece;
+  piece.path = std::move(path);
+  nurbs::InterpolationOptions io;
+  io.parametrisation = options.parametrisation;
+  piece.curve = nurbs::interpolate(piece.path.data_points, io);
+
+  // Sample loop by loop, so every loop join is a sample and each loop owns its samples.
+  const double d = pattern.yarns[piece.path.yarn].diameter;
+  const double tolerance = options.chord_tolerance * d;
+  const auto& u = piece.curve.parameters;
+  piece.loop_samples.push_back(0);
+  for (std::size_t j = 0; j < piece.path.loops.size(); ++j) {
+    const double u0 = u[j * yarn_paths::points_per_loop], u1 = u[(j + 1) * yarn_paths::points_per_loop];
+    const auto s = sweep::sample_parameters(piece.curve.curve, u0, u1, tolerance, 0.5 * d);
+    piece.samples.insert(piece.samples.end(), s.begin() + (j == 0 ? 0 : 1), s.end());
+    piece.loop_samples.push_back(piece.samples.size() - 1);
+  }
+  piece.frames = sweep::frames(piece.curve.curve, piece.samples, frame_kind(options.loop_model));
+  return piece;
+}
+
+mesh::Mode primitive_mode(View view) {
+  switch (view) {
+    case View::surface: return mesh::Mode::triangles;
+    case View::wireframe: return mesh::Mode::lines;
+    case View::centreline: return mesh::Mode::line_strip;
+  }
+  return mesh::Mode::triangles;
+}
+
+mesh::Mesh build_mesh(const Pattern& pattern, const std::vector<CurvePiece>& pieces, const CompileOptions& options) {
+  mesh::Mesh out;
+  // A material for each yarn that is used, in the pattern's yarn order.
+  std::vector<int> material_of(pattern.yarns.size(), -1);
+  for (const CurvePiece& p : pieces) material_of[p.path.yarn] = 0;
+  for (std::size_t y = 0; y < pattern.yarns.size(); ++y) {
+    if (material_of[y] < 0) continue;
+    material_of[y] = static_cast<int>(out.materials.size());
+    out.materials.push_back({pattern.yarns[y].id, linear_rgb(pattern.yarns[y].color)});
+  }
+  const mesh::Mode mode = primitive_mode(options.view);
+  if (mode == mesh::Mode::line_strip) {
+    // glTF has no primitive restart: a line strip per piece.
+    for (const CurvePiece& p : pieces) {
+      mesh::Primitive prim;
+      prim.material = material_of[p.path.yarn];
+      prim.mode = mode;
+      for (const auto& o : p.frames.origin) {
+        prim.indices.push_back(static_cast<std::uint32_t>(prim.positions.size()));
+        prim.positions.emplace_back(o);
+      }
+      out.primitives.push_back(std::move(prim));
+    }
+    return out;
+  }
+  // One primitive per yarn, in material order.
+  std::vector<mesh::Primitive> by_yarn(pattern.yarns.size());
+  for (const CurvePiece& p : pieces) {
+    mesh::Primitive& prim = by_yarn[p.path.yarn];
+    prim.material = material_of[p.path.yarn];
+    prim.mode = mode;
+    const double radius = 0.5 * pattern.yarns[p.path.yarn].diameter;
+    if (mode == mesh::Mode::triangles) sweep::append_tube(p.frames, radius, options.sides, prim);
+    else sweep::append_wireframe(p.frames, radius, options.sides, prim);
+  }
+  for (auto& prim : by_yarn) {
+    if (!prim.indices.empty()) out.primitives.push_back(std::move(prim));
+  }
+  return out;
+}
+
+}  // namespace
+
+Fabric compile(const Pattern& pattern, const CompileOptions& options) {
+  assert(options.sides >= 3 && options.chord_tolerance > 0.0);
+  Fabric fabric;
+  fabric.layout = layout::lay_out(pattern);
+  auto paths = yarn_paths::trace(fabric.layout, options.loop_model);
+  fabric.pieces.reserve(paths.size());
+  for (auto& path : paths) fabric.pieces.push_back(trace_curve(std::move(path), pattern, options));
+  fabric.mesh = build_mesh(pattern, fabric.pieces, options);
+  return fabric;
+}
+
+}  // namespace knitc

@@ -1,0 +1,58 @@
+// The compiler's pipeline, wired: Pattern -> Layout -> yarn paths -> NURBS curves ->
+// sweep -> Mesh. Each stage is a function of plain data; this file only runs them in turn.
+#pragma once
+
+#include <vector>
+
+#include "layout/layout.hpp"
+#include "mesh/mesh.hpp"
+#include "nurbs/nurbs.hpp"
+#include "pattern.hpp"
+#include "sweep/sweep.hpp"
+#include "yarn_paths/yarn_paths.hpp"
+
+namespace knitc {
+
+enum class View {
+  surface,     // closed yarn tubes, triangles
+  wireframe,   // the tubes' rings and long edges, lines (the paper's Figure 7)
+  centreline,  // the sampled centrelines, one line strip per yarn piece (Figure 6)
+};
+
+struct CompileOptions {
+  yarn_paths::LoopModel loop_model = yarn_paths::LoopModel::smooth;
+  nurbs::Parametrisation parametrisation = nurbs::Parametrisation::chord_length;
+  View view = View::surface;
+  int sides = 12;                 // vertices per tube ring, >= 3
+  double chord_tolerance = 0.01;  // as a fraction of the yarn diameter, > 0
+};
+
+// One yarn piece through the stages: its data points, its curve, its samples.
+struct CurvePiece {
+  yarn_paths::Piece path;
+  nurbs::Interpolant curve;
+  std::vector<double> samples;  // curve parameters, increasing
+  sweep::Frames frames;         // one per sample; frames.origin are the centreline samples
+  // Loop j of the piece owns samples [loop_samples[j], loop_samples[j + 1]] (both ends:
+  // loops that meet share their join sample). Size: path.loops.size() + 1.
+  std::vector<std::size_t> loop_samples;
+};
+
+struct Fabric {
+  layout::Layout layout;
+  std::vector<CurvePiece> pieces;
+  mesh::Mesh mesh;
+};
+
+// The frames each loop model sweeps with: Frenet for the paper's, rotation-minimising
+// for the smooth one.
+sweep::FrameKind frame_kind(yarn_paths::LoopModel model);
+
+// Compiles a validated pattern (the runtime validates) into geometry.
+Fabric compile(const Pattern& pattern, const CompileOptions& options);
+
+// "#rrggbb" to linear RGB in [0, 1] (the sRGB transfer function undone), as glTF's
+// baseColorFactor wants. The string must be valid: the runtime checks it.
+glm::vec3 linear_rgb(const std::string& hex);
+
+}  // namespace knitc

@@ -1,0 +1,144 @@
+// Global curve interpolation through data points (P&T A9.1, and section 9.2.2 for end
+// derivatives). The system matrix is banded: row k has non-zeros only in the p + 1
+// columns of its knot span, so a banded LU without pivoting solves it in O(n p^2).
+// Piegl & Tiller show the matrix is totally positive, which makes the unpivoted
+// elimination stable.
+#include "nurbs.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+namespace knitc::nurbs {
+
+namespace {
+
+// A square matrix stored by diagonals: entry (r, c) with -lower <= c - r <= upper.
+class BandMatrix {
+ public:
+  BandMatrix(int size, int lower, int upper)
+      : n_(size), lower_(lower), upper_(upper),
+        cells_(static_cast<std::size_t>(size) * (lower + upper + 1), 0.0) {}
+
+  double& at(int r, int c) {
+    if (c - r < -lower_ || c - r > upper_) throw std::logic_error("nurbs: entry outside the band");
+    return cells_[static_cast<std::size_t>(r) * (lower_ + upper_ + 1) + (c - r + lower_)];
+  }
+
+  // In-place LU without pivoting, then solves for every right-hand side column.
+  void solve(std::vector<Point>& rhs) {
+    for (int k = 0; k < n_; ++k) {
+      const double pivot = at(k, k);
+      if (std::abs(pivot) < 1e-300) throw std::invalid_argument("nurbs: singular interpolation system");
+      for (int r = k + 1; r <= std::min(n_ - 1, k + lower_); ++r) {
+        const double f = at(r, k) / pivot;
+        if (f == 0.0) continue;
+        at(r, k) = f;
+        for (int c = k + 1; c <= std::min(n_ - 1, k + upper_); ++c) at(r, c) -= f * at(k, c);
+        rhs[r] -= f * rhs[k];
+      }
+    }
+    for (int k = n_ - 1; k >= 0; --k) {
+      Point v = rhs[k];
+      for (int c = k + 1; c <= std::min(n_ - 1, k + upper_); ++c) v -= at(k, c) * rhs[c];
+      rhs[k] = v / at(k, k);
+    }
+  }
+
+ private:
+  int n_, lower_, upper_;
+  std::vector<double> cells_;
+};
+
+std::vector<double> data_parameters(std::span<const Point> q, Parametrisation kind) {
+  const std::size_t n = q.size() - 1;
+  std::vector<double> step(n + 1, 0.0);
+  double total = 0.0;
+  for (std::size_t k = 1; k <= n; ++k) {
+    const double chord = glm::distance(q[k], q[k - 1]);
+    if (!(chord > 0.0)) throw std::invalid_argument("nurbs: two consecutive data points coincide");
+    step[k] = kind == Parametrisation::centripetal ? std::sqrt(chord) : chord;
+    total += step[k];
+  }
+  std::vector<double> u(n + 1, 0.0);
+  for (std::size_t k = 1; k < n; ++k) u[k] = u[k - 1] + step[k] / total;
+  u[n] = 1.0;
+  return u;
+}
+
+// Fills row `row` of the matrix with the basis functions at u.
+void put_basis_row(BandMatrix& m, const Curve& c, int row, double u) {
+  const int span = find_span(c, u);
+  BasisTable N;
+  basis_derivatives(c, span, u, 0, N);
+  for (int j = 0; j <= c.degree; ++j) m.at(row, span - c.degree + j) = N[0][j];
+}
+
+}  // namespace
+
+Interpolant interpolate(std::span<const Point> q, const InterpolationOptions& options) {
+  if (q.size() < 2) throw std::invalid_argument("nurbs: interpolation needs at least two data points");
+  const int n = static_cast<int>(q.size()) - 1;
+  const bool with_ends = options.start_derivative.has_value() || options.end_derivative.has_value();
+  if (with_ends && !(options.start_derivative && options.end_derivative))
+    throw std::invalid_argument("nurbs: give both end derivatives or neither");
+
+  Interpolant result;
+  result.parameters = data_parameters(q, options.parametrisation);
+  const auto& ub = result.parameters;
+  Curve& c = result.curve;
+
+  // Degree: cubic, lowered for too few points; end derivatives add two control points.
+  const int controls = with_ends ? n + 3 : n + 1;
+  const int p = std::min(3, controls - 1);
+  c.degree = p;
+  c.knots.assign(static_cast<std::size_t>(controls + p + 1), 0.0);
+  for (int i = 0; i <= p; ++i) c.knots[c.knots.size() - 1 - i] = 1.0;
+  if (!with_ends) {
+    for (int j = 1; j <= n - p; ++j) {  // eq. 9.8
+      double s = 0.0;
+      for (int i = j; i <= j + p - 1; ++i) s += ub[i];
+      c.knots[j + p] = s / p;
+    }
+  } else {
+    for (int j = 0; j <= n - p + 1; ++j) {  // eq. 9.22
+      double s = 0.0;
+      for (int i = j; i <= j + p - 1; ++i) s += ub[std::min(i, n)];
+      c.knots[j + p + 1] = s / p;
+    }
+  }
+  c.points.assign(controls, Point(0.0));
+
+  // The band: a row's span lies within p columns of its diagonal either way.
+  BandMatrix m(controls, p + 1, p + 1);
+  std::vector<Point> rhs(controls);
+  if (!with_ends) {
+    for (int k = 0; k <= n; ++k) {
+      put_basis_row(m, c, k, ub[k]);
+      rhs[k] = q[k];
+    }
+  } else {
+    const double first = c.knots[p + 1];
+    const double last = c.knots[controls - 1];  // u_{m-p-1} with m the last knot index
+    m.at(0, 0) = 1.0;
+    rhs[0] = q[0];
+    m.at(1, 0) = -1.0;
+    m.at(1, 1) = 1.0;
+    rhs[1] = (first / p) * *options.start_derivative;
+    for (int k = 1; k < n; ++k) {
+      put_basis_row(m, c, k + 1, ub[k]);
+      rhs[k + 1] = q[k];
+    }
+    m.at(n + 1, n + 1) = -1.0;
+    m.at(n + 1, n + 2) = 1.0;
+    rhs[n + 1] = ((1.0 - last) / p) * *options.end_derivative;
+    m.at(n + 2, n + 2) = 1.0;
+    rhs[n + 2] = q[n];
+  }
+  m.solve(rhs);
+  c.points = std::move(rhs);
+  return result;
+}
+
+}  // namespace knitc::nurbs

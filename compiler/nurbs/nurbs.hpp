@@ -1,0 +1,82 @@
+// The NURBS core: clamped rational B-spline curves, their evaluation with derivatives,
+// and global interpolation through data points (Piegl & Tiller, The NURBS Book, 2nd ed.,
+// chapters 2, 4 and 9). Depends on GLM and the standard library only.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace knitc::nurbs {
+
+using Point = glm::dvec3;
+
+// A clamped NURBS curve C(u), u in [knots.front(), knots.back()].
+// Invariants (checked by is_valid): degree >= 1; points.size() >= degree + 1;
+// knots.size() == points.size() + degree + 1, non-decreasing, first and last values
+// repeated degree + 1 times; weights empty (all 1: a non-rational B-spline) or one
+// positive weight per control point.
+struct Curve {
+  int degree = 3;
+  std::vector<double> knots;
+  std::vector<Point> points;
+  std::vector<double> weights;
+};
+
+bool is_valid(const Curve& curve);
+
+// The knot span index i with knots[i] <= u < knots[i+1] (A2.1); u is clamped to the
+// curve's domain, and u at the domain's end falls in the last non-empty span.
+int find_span(const Curve& curve, double u);
+
+// Basis functions N_{span-p..span, p}(u) and their derivatives up to `order` (A2.3):
+// out[k][j] is the k-th derivative of N_{span-p+j,p} at u. order <= max_order.
+inline constexpr int max_degree = 7;
+inline constexpr int max_order = 3;
+using BasisTable = std::array<std::array<double, max_degree + 1>, max_order + 1>;
+void basis_derivatives(const Curve& curve, int span, double u, int order, BasisTable& out);
+
+// C(u) and its derivatives d^k C / du^k for k = 0..order (order <= 3), rational
+// derivatives by A4.2. Derivatives above the degree are zero.
+std::array<Point, max_order + 1> derivatives(const Curve& curve, double u, int order);
+Point evaluate(const Curve& curve, double u);
+
+// Curvature |C' x C''| / |C'|^3, in 1/length. Zero where C' vanishes.
+double curvature(const Curve& curve, double u);
+// Torsion (C' x C'') . C''' / |C' x C''|^2, in 1/length. Zero where C' x C'' vanishes.
+double torsion(const Curve& curve, double u);
+// Arc length of C over [u0, u1] (u0 <= u1), by adaptive Gauss-Legendre quadrature to a
+// relative accuracy of about 1e-10.
+double arc_length(const Curve& curve, double u0, double u1);
+
+enum class Parametrisation {
+  chord_length,  // parameter steps proportional to |Q_k - Q_{k-1}| (P&T eq. 9.5)
+  centripetal,   // proportional to |Q_k - Q_{k-1}|^(1/2) (P&T eq. 9.6)
+};
+
+struct InterpolationOptions {
+  Parametrisation parametrisation = Parametrisation::chord_length;
+  // End derivatives dC/du at u = 0 and u = 1 (P&T section 9.2.2). Note the unit: per
+  // unit of the normalised parameter, so a tangent direction t with the curve's
+  // chord length L is asked for as L * t.
+  std::optional<Point> start_derivative;
+  std::optional<Point> end_derivative;
+};
+
+struct Interpolant {
+  Curve curve;
+  // The parameter of each data point: curve(parameters[k]) == data[k].
+  std::vector<double> parameters;
+};
+
+// A non-rational curve of degree min(3, data.size() - 1) through every data point,
+// parameters in [0, 1] by the chosen parametrisation, knots by averaging (P&T eq. 9.8;
+// eq. 9.22 with end derivatives), control points from the banded linear system (A9.1).
+// Needs at least two data points and no two consecutive ones equal; throws
+// std::invalid_argument otherwise.
+Interpolant interpolate(std::span<const Point> data, const InterpolationOptions& options = {});
+
+}  // namespace knitc::nurbs

@@ -1,0 +1,73 @@
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "sweep/sweep.hpp"
+
+namespace knitc::sweep {
+
+namespace {
+
+struct Cell {
+  double a, b;     // parameter range
+  double density;  // samples needed in the cell, fractional
+};
+
+// 3-point Gauss-Legendre estimate of arc length over [a, b]; cells are short and the
+// estimate only sets sample density.
+double cell_length(const nurbs::Curve& c, double a, double b) {
+  constexpr double x = 0.7745966692414834, w0 = 8.0 / 9.0, w1 = 5.0 / 9.0;
+  const double h = 0.5 * (b - a), m = 0.5 * (a + b);
+  auto speed = [&](double u) { return glm::length(nurbs::derivatives(c, u, 1)[1]); };
+  return h * (w1 * speed(m - h * x) + w0 * speed(m) + w1 * speed(m + h * x));
+}
+
+}  // namespace
+
+std::vector<double> sample_parameters(const nurbs::Curve& c, double u0, double u1,
+                                      double tolerance, double radius) {
+  constexpr int cells_per_span = 4;
+  constexpr double max_samples = 1 << 22;  // a guard, far above any sane tolerance
+  std::vector<Cell> cells;
+  double a = u0;
+  auto add_span = [&](double b) {
+    for (int i = 0; i < cells_per_span; ++i) {
+      const double ca = a + (b - a) * i / cells_per_span;
+      const double cb = i + 1 == cells_per_span ? b : a + (b - a) * (i + 1) / cells_per_span;
+      double k = 0.0;
+      for (double u : {ca, 0.5 * (ca + cb), cb}) k = std::max(k, nurbs::curvature(c, u));
+      const double outer = k * (1.0 + radius * k);  // sagitta factor of the outer fibre
+      const double step = outer > 0.0 ? std::sqrt(8.0 * tolerance / outer) : INFINITY;
+      cells.push_back({ca, cb, cell_length(c, ca, cb) / step});
+    }
+    a = b;
+  };
+  for (double k : c.knots) {
+    if (k > a && k < u1) add_span(k);
+  }
+  add_span(u1);
+
+  double total = 0.0;
+  for (const Cell& cell : cells) total += cell.density;
+  const int count = static_cast<int>(std::clamp(std::ceil(total), 1.0, max_samples));
+
+  // Place sample j where the running density reaches j * total / count.
+  std::vector<double> u;
+  u.reserve(count + 1);
+  u.push_back(u0);
+  double before = 0.0;
+  std::size_t i = 0;
+  for (int j = 1; j < count; ++j) {
+    const double target = total * j / count;
+    while (i + 1 < cells.size() && before + cells[i].density < target) before += cells[i++].density;
+    const Cell& cell = cells[i];
+    const double f = cell.density > 0.0 ? std::clamp((target - before) / cell.density, 0.0, 1.0) : 1.0;
+    const double s = cell.a + (cell.b - cell.a) * f;
+    if (s > u.back() && s < u1) u.push_back(s);
+  }
+  u.push_back(u1);
+  return u;
+}
+
+}  // namespace knitc::sweep

@@ -1,0 +1,72 @@
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "writers/writers.hpp"
+
+namespace knitc::writers {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+double micro(double v) {
+  const double r = std::round(v * 1e6) / 1e6;
+  return r == 0.0 ? 0.0 : r;  // no "-0.0"
+}
+
+json xyz(const glm::dvec3& p) { return json::array({micro(p.x), micro(p.y), micro(p.z)}); }
+
+const char* stitch_name(Stitch s) {
+  switch (s) {
+    case Stitch::knit: return "k";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_paths::LoopModel model) {
+  json doc;
+  doc["units"] = "mm";
+  doc["loop_model"] = model == yarn_paths::LoopModel::paper ? "paper" : "smooth";
+
+  json yarns = json::array();
+  for (std::size_t y = 0; y < pattern.yarns.size(); ++y) {
+    json points = json::array(), pieces = json::array();
+    for (const CurvePiece& piece : fabric.pieces) {
+      if (piece.path.yarn != static_cast<int>(y)) continue;
+      pieces.push_back(json::array({points.size(), piece.frames.size()}));
+      for (const auto& p : piece.frames.origin) points.push_back(xyz(p));
+    }
+    if (pieces.empty()) continue;
+    yarns.push_back({{"id", pattern.yarns[y].id},
+                     {"color", pattern.yarns[y].color},
+                     {"points", std::move(points)},
+                     {"pieces", std::move(pieces)}});
+  }
+  doc["yarns"] = std::move(yarns);
+
+  // Loops in layout order, each with the samples of the piece that owns them.
+  std::vector<json> loops(fabric.layout.loops.size());
+  for (const CurvePiece& piece : fabric.pieces) {
+    for (std::size_t j = 0; j < piece.path.loops.size(); ++j) {
+      const int index = piece.path.loops[j];
+      const layout::Loop& loop = fabric.layout.loops[index];
+      json data = json::array(), samples = json::array();
+      for (const auto& p : loop.data_points) data.push_back(xyz(p));
+      for (std::size_t s = piece.loop_samples[j]; s <= piece.loop_samples[j + 1]; ++s)
+        samples.push_back(xyz(piece.frames.origin[s]));
+      loops[index] = {{"course", loop.course},
+                      {"wale", loop.wale},
+                      {"stitch", stitch_name(loop.stitch)},
+                      {"yarn", pattern.yarns[loop.yarn].id},
+                      {"data_points", std::move(data)},
+                      {"samples", std::move(samples)}};
+    }
+  }
+  doc["loops"] = std::move(loops);
+  return doc.dump() + "\n";
+}
+
+}  // namespace knitc::writers

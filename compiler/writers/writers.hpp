@@ -1,0 +1,37 @@
+// Writers: the mesh and the centrelines as bytes, and files written all or nothing.
+// They know the mesh and plain geometry, not how it was made.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "compile.hpp"
+#include "mesh/mesh.hpp"
+
+namespace knitc::writers {
+
+// A binary glTF 2.0 (.glb) of the mesh: metres (positions scaled from mm), +Y up, one
+// mesh with a primitive per mesh primitive, one material per mesh material (base colour,
+// not metallic), uint32 indices, POSITION with min and max, NORMAL where present.
+// `generator` goes to asset.generator. Throws std::runtime_error if serialisation fails.
+std::string glb(const mesh::Mesh& mesh, const std::string& generator);
+
+// The centreline JSON (units mm), rounded to 1e-6 mm:
+// {"units":"mm","loop_model":..., "yarns":[{"id","color","points","pieces"}],
+//  "loops":[{"course","wale","stitch","yarn","data_points","samples"}]}
+// A yarn's "points" are the samples of all its pieces, piece after piece; "pieces" gives
+// each piece as [first point index, point count].
+std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_paths::LoopModel model);
+
+struct OutputFile {
+  std::string path;
+  std::string bytes;
+};
+
+// Writes every file to a temporary file beside its target, then renames each into
+// place, so a failure never leaves a partial or clobbered file. Throws
+// std::runtime_error naming the path on failure, after removing the temporaries.
+void write_files(std::span<const OutputFile> files);
+
+}  // namespace knitc::writers
