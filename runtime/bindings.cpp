@@ -100,7 +100,9 @@ void only_known_keys(lua_State* L, int index, const char* table, std::initialize
 }
 
 double in_range(lua_State* L, double v, const char* what, double lo, double hi, const char* unit) {
-  if (!std::isfinite(v) || v <= lo || v > hi)
+  if (std::isnan(v))
+    fail(L, std::string(what) + " is NaN; it must be more than " + show(lo) + unit + " and at most " + show(hi) + unit);
+  if (v <= lo || v > hi)
     fail(L, std::string(what) + " is " + show(v) + unit + "; it must be more than " + show(lo) + unit +
                 " and at most " + show(hi) + unit);
   return v;

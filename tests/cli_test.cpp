@@ -1,0 +1,146 @@
+// The knitc command line, end to end: outputs, views, exit codes, and no file left
+// behind by a failure. The .glb files written to the glb directory are checked by the
+// gltf_validator test afterwards.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "reference_nurbs.hpp"
+#include "support.hpp"
+
+namespace knitc {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+TEST(Cli, BuildsTheDefaultPatternInEveryViewAndLoopModel) {
+  const fs::path dir = test::glb_dir();
+  const std::pair<const char*, const char*> cases[] = {
+      {"jersey-surface.glb", ""},
+      {"jersey-surface-paper.glb", "--loop-model paper"},
+      {"jersey-wireframe.glb", "--view wireframe"},
+      {"jersey-centreline.glb", "--view centreline"},
+      {"jersey-centreline-paper.glb", "--view centreline --loop-model paper"},
+      {"jersey-centripetal-coarse.glb", "--parameters centripetal --sides 5 --tolerance 0.1"},
+  };
+  for (const auto& [name, options] : cases) {
+    const auto r = test::run_knitc("build patterns/jersey.lua -q -o " + quoted(dir / name) + " " + options);
+    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    EXPECT_EQ(r.err, "") << name;
+    ASSERT_TRUE(fs::exists(dir / name)) << name;
+    const std::string glb = test::read_text(dir / name);
+    ASSERT_GT(glb.size(), 20u);
+    EXPECT_EQ(glb.substr(0, 4), "glTF");
+    EXPECT_NE(glb.find("\"generator\":\"knitc 0."), std::string::npos);
+  }
+}
+
+TEST(Cli, WritesTheCentrelineJson) {
+  const fs::path dir = test::scratch_dir("json");
+  const auto r = test::run_knitc("build patterns/jersey.lua -q -o " + quoted(dir / "j.glb") + " --loop-model paper --centreline " +
+                                 quoted(dir / "j.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(test::read_text(dir / "j.json"));
+  EXPECT_EQ(doc["units"], "mm");
+  EXPECT_EQ(doc["loop_model"], "paper");
+  ASSERT_EQ(doc["yarns"].size(), 1u);
+  EXPECT_EQ(doc["yarns"][0]["id"], "A");
+  EXPECT_EQ(doc["yarns"][0]["color"], "#d9c8a9");
+  ASSERT_EQ(doc["loops"].size(), 480u);  // jersey: 20 stitches, 24 rows
+  std::size_t pieces_points = 0;
+  for (const auto& piece : doc["yarns"][0]["pieces"]) pieces_points += piece[1].get<std::size_t>();
+  EXPECT_EQ(pieces_points, doc["yarns"][0]["points"].size());
+  // Each loop's samples run from its P0 to its P16 and lie on the paper's curve through
+  // its data points, computed independently (to the JSON's rounding of 1e-6 mm).
+  double worst = 0.0;
+  for (const auto& loop : doc["loops"]) {
+    EXPECT_EQ(loop["stitch"], "k");
+    EXPECT_EQ(loop["yarn"], "A");
+    std::vector<glm::dvec3> q;
+    for (const auto& p : loop["data_points"]) q.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+    ASSERT_EQ(q.size(), 17u);
+    const auto& samples = loop["samples"];
+    ASSERT_GE(samples.size(), 17u);
+    auto at = [&](std::size_t i) { return glm::dvec3(samples[i][0].get<double>(), samples[i][1].get<double>(), samples[i][2].get<double>()); };
+    EXPECT_LT(glm::distance(at(0), q[0]), 2e-6);
+    EXPECT_LT(glm::distance(at(samples.size() - 1), q[16]), 2e-6);
+    const auto ref = reference::interpolate(q, false);
+    // Nearest point on the reference curve by dense search and a few bisections.
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const glm::dvec3 s = at(i);
+      double best_u = 0.0, best = 1e9;
+      for (int k = 0; k <= 2000; ++k) {
+        const double dist = glm::distance(reference::point(ref, k / 2000.0), s);
+        if (dist < best) best = dist, best_u = k / 2000.0;
+      }
+      double lo = std::max(0.0, best_u - 1.0 / 2000), hi = std::min(1.0, best_u + 1.0 / 2000);
+      for (int it = 0; it < 60; ++it) {
+        const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+        if (glm::distance(reference::point(ref, a), s) < glm::distance(reference::point(ref, b), s)) hi = b;
+        else lo = a;
+      }
+      worst = std::max(worst, glm::distance(reference::point(ref, 0.5 * (lo + hi)), s));
+    }
+  }
+  EXPECT_LT(worst, 1e-5);
+  fs::remove_all(dir);
+}
+
+TEST(Cli, PatternProblemsExitOneAndWriteNothing) {
+  const fs::path dir = test::scratch_dir("bad");
+  test::write_text(dir / "bad.lua", "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { diameter = 1 } } }\n"
+                                    "cast_on(10)\nrows(4, \"k3\")\n");
+  test::write_text(dir / "keep.glb", "an older file");
+  const auto r = test::run_knitc("build " + quoted(dir / "bad.lua") + " -o " + quoted(dir / "keep.glb") +
+                                 " --centreline " + quoted(dir / "c.json"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, (dir / "bad.lua").string() +
+                       ":3: row \"k3\" uses 3 stitches per repeat, which does not come out on 10 live stitches "
+                       "(1 left over); change the repeat or the stitch count\n");
+  EXPECT_EQ(test::read_text(dir / "keep.glb"), "an older file");
+  EXPECT_FALSE(fs::exists(dir / "c.json"));
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 2u);  // no temporaries left
+  fs::remove_all(dir);
+}
+
+TEST(Cli, CommandLineMisuseExitsTwo) {
+  const fs::path dir = test::scratch_dir("usage");
+  const std::string out = " -o " + quoted(dir / "x.glb");
+  for (const std::string args :
+       {std::string(""), std::string("build"), std::string("build patterns/jersey.lua"), std::string("frobnicate"),
+        "build patterns/jersey.lua" + out + " --view hologram", "build patterns/jersey.lua" + out + " --sides 2",
+        "build patterns/jersey.lua" + out + " --tolerance 0", "build patterns/jersey.lua" + out + " --loop-model lumpy",
+        "build no/such/pattern.lua" + out, "build patterns/jersey.lua -o " + quoted(dir / "no/such/dir/x.glb"),
+        "build patterns/jersey.lua" + out + " --centreline " + quoted(dir / "x.glb")}) {
+    const auto r = test::run_knitc(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+  EXPECT_FALSE(fs::exists(dir / "x.glb"));
+  fs::remove_all(dir);
+}
+
+TEST(Cli, VersionAndHelpExitZero) {
+  const auto v = test::run_knitc("--version");
+  EXPECT_EQ(v.exit_code, 0);
+  EXPECT_EQ(v.out.rfind("knitc 0.", 0), 0u);
+  EXPECT_EQ(test::run_knitc("build --help").exit_code, 0);
+}
+
+TEST(Cli, SameScriptGivesByteIdenticalFiles) {
+  const fs::path dir = test::scratch_dir("determinism");
+  for (const char* name : {"a", "b"}) {
+    const auto r = test::run_knitc("build patterns/jersey.lua -q -o " + quoted(dir / (std::string(name) + ".glb")) +
+                                   " --centreline " + quoted(dir / (std::string(name) + ".json")));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_EQ(test::read_text(dir / "a.glb"), test::read_text(dir / "b.glb"));
+  EXPECT_EQ(test::read_text(dir / "a.json"), test::read_text(dir / "b.json"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace knitc

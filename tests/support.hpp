@@ -1,0 +1,76 @@
+// Helpers shared by the tests: running the knitc binary, scratch directories, and a
+// few patterns compiled in memory.
+#pragma once
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+
+#include "compile.hpp"
+#include "runtime.hpp"
+
+namespace knitc::test {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+inline std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline void write_text(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+// A fresh, empty directory for one test, under the build tree.
+inline std::filesystem::path scratch_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("knitc-test-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// The directory whose .glb files the validator test checks after the unit tests.
+inline std::filesystem::path glb_dir() {
+  std::filesystem::create_directories(KNITC_GLB_DIR);
+  return KNITC_GLB_DIR;
+}
+
+// Runs `knitc ARGS` (arguments already shell-quoted where needed), from the source tree.
+inline CommandResult run_knitc(const std::string& args) {
+  const auto dir = scratch_dir("run");
+  const std::string cmd = std::string("cd '") + KNITC_SOURCE_DIR + "' && '" + KNITC_BINARY + "' " + args +
+                          " >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
+  const int status = std::system(cmd.c_str());
+  CommandResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_text(dir / "out");
+  r.err = read_text(dir / "err");
+  std::filesystem::remove_all(dir);
+  return r;
+}
+
+inline std::string jersey_source(int stitches, int rows, double w = 4.0, double h = 4.2, double t = 2.0,
+                                 double d = 1.0) {
+  std::ostringstream s;
+  s << "pattern {\n  name = \"jersey\",\n  gauge = { loop_width = " << w << ", loop_height = " << h
+    << ", thickness = " << t << " },\n  yarns = { A = { diameter = " << d << ", color = \"#d9c8a9\" } },\n}\n"
+    << "cast_on(" << stitches << ")\nrows(" << rows << ", \"k\")\n";
+  return s.str();
+}
+
+inline Pattern jersey(int stitches, int rows, double w = 4.0, double h = 4.2, double t = 2.0, double d = 1.0) {
+  return runtime::run_pattern(jersey_source(stitches, rows, w, h, t, d), "jersey.lua");
+}
+
+}  // namespace knitc::test

@@ -1,0 +1,210 @@
+// The sweep: samples placed by the chord-error tolerance, frames that stay orthonormal
+// and do not flip, and tubes that are closed, two-manifold and facing out.
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "support.hpp"
+
+namespace knitc {
+namespace {
+
+using yarn_paths::LoopModel;
+
+// Distance from p to the segment ab.
+double to_segment(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b) {
+  const glm::dvec3 ab = b - a;
+  const double t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+  return glm::distance(p, a + t * ab);
+}
+
+TEST(Sampling, ChordErrorStaysWithinTheTolerance) {
+  for (double tolerance : {0.05, 0.01, 0.002}) {
+    CompileOptions o;
+    o.chord_tolerance = tolerance;
+    const double d = 1.0;
+    const Fabric f = compile(test::jersey(4, 2, 4.0, 4.2, 2.0, d), o);
+    double worst = 0.0;
+    for (const auto& piece : f.pieces) {
+      const auto& u = piece.samples;
+      for (std::size_t i = 0; i + 1 < u.size(); ++i) {
+        for (int k = 1; k < 8; ++k) {
+          const glm::dvec3 p = nurbs::evaluate(piece.curve.curve, u[i] + (u[i + 1] - u[i]) * k / 8.0);
+          worst = std::max(worst, to_segment(p, piece.frames.origin[i], piece.frames.origin[i + 1]));
+        }
+      }
+    }
+    // The centreline's chord error is below the outer fibre's, which the tolerance bounds.
+    EXPECT_LE(worst, tolerance * d * 1.02) << "tolerance " << tolerance;
+    EXPECT_GT(worst, tolerance * d * 0.2) << "far more samples than the tolerance needs";
+  }
+}
+
+TEST(Sampling, SampleCountGrowsAsTheInverseSquareRootOfTheTolerance) {
+  auto count = [](double tolerance) {
+    CompileOptions o;
+    o.chord_tolerance = tolerance;
+    std::size_t n = 0;
+    for (const auto& piece : compile(test::jersey(6, 3), o).pieces) n += piece.samples.size();
+    return static_cast<double>(n);
+  };
+  const double ratio = count(0.0025) / count(0.04);  // tolerance / 16: about 4x the samples
+  EXPECT_GT(ratio, 3.5);
+  EXPECT_LT(ratio, 4.5);
+}
+
+TEST(Sampling, StraightSegmentNeedsNoInteriorSamples) {
+  const std::vector<glm::dvec3> line = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
+  const auto curve = nurbs::interpolate(line).curve;
+  const auto u = sweep::sample_parameters(curve, 0.0, 1.0, 0.01, 0.5);
+  EXPECT_EQ(u.size(), 2u);
+}
+
+TEST(Frames, AreOrthonormalAndRotationMinimisingFramesDoNotFlip) {
+  const Fabric f = compile(test::jersey(8, 2), CompileOptions{});
+  double largest_turn = 0.0;
+  for (const auto& piece : f.pieces) {
+    const auto& fr = piece.frames;
+    for (std::size_t i = 0; i < fr.size(); ++i) {
+      EXPECT_NEAR(glm::length(fr.tangent[i]), 1.0, 1e-12);
+      EXPECT_NEAR(glm::length(fr.normal[i]), 1.0, 1e-12);
+      EXPECT_NEAR(glm::dot(fr.tangent[i], fr.normal[i]), 0.0, 1e-12);
+      EXPECT_NEAR(glm::dot(fr.binormal[i], glm::cross(fr.tangent[i], fr.normal[i])), 1.0, 1e-12);
+      if (i + 1 < fr.size()) {
+        // The normal turns no more than the tangent does between two samples, plus a little.
+        const double tangent_turn = std::acos(std::clamp(glm::dot(fr.tangent[i], fr.tangent[i + 1]), -1.0, 1.0));
+        const double normal_turn = std::acos(std::clamp(glm::dot(fr.normal[i], fr.normal[i + 1]), -1.0, 1.0));
+        EXPECT_LE(normal_turn, tangent_turn + 1e-6);
+        largest_turn = std::max(largest_turn, normal_turn);
+      }
+    }
+  }
+  EXPECT_LT(largest_turn * 180.0 / std::numbers::pi, 30.0);
+}
+
+TEST(Frames, RotationMinimisingFrameHasNoTwistOnAPlanarCurve) {
+  // On a plane curve the rotation-minimising normal stays in or perpendicular to the plane.
+  std::vector<glm::dvec3> wave;
+  for (int i = 0; i <= 40; ++i) wave.emplace_back(i * 0.5, std::sin(i * 0.5), 0.0);
+  const auto curve = nurbs::interpolate(wave).curve;
+  const auto u = sweep::sample_parameters(curve, 0.0, 1.0, 0.001, 0.0);
+  const auto fr = sweep::frames(curve, u, sweep::FrameKind::rotation_minimising);
+  const double z0 = fr.normal[0].z;
+  for (std::size_t i = 0; i < fr.size(); ++i) EXPECT_NEAR(std::abs(fr.normal[i].z), std::abs(z0), 1e-6);
+}
+
+struct TopologyReport {
+  std::size_t welded_vertices = 0, edges = 0, triangles = 0;
+  std::size_t non_manifold_edges = 0;    // used by other than exactly two triangles
+  std::size_t inconsistent_edges = 0;    // the same directed edge twice
+  double signed_volume = 0.0;            // mm^3, positive when triangles face out
+  std::size_t components = 0;
+};
+
+// Welds vertices with identical positions, then checks the edges.
+TopologyReport topology(const mesh::Primitive& prim) {
+  std::map<std::tuple<float, float, float>, std::uint32_t> ids;
+  std::vector<std::uint32_t> weld(prim.positions.size());
+  for (std::size_t i = 0; i < prim.positions.size(); ++i) {
+    const auto& p = prim.positions[i];
+    weld[i] = ids.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<std::uint32_t>(ids.size())).first->second;
+  }
+  TopologyReport r;
+  r.welded_vertices = ids.size();
+  r.triangles = prim.indices.size() / 3;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  std::vector<std::uint32_t> parent(ids.size());
+  for (std::uint32_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  auto find = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (std::size_t t = 0; t < prim.indices.size(); t += 3) {
+    const std::uint32_t v[3] = {weld[prim.indices[t]], weld[prim.indices[t + 1]], weld[prim.indices[t + 2]]};
+    for (int e = 0; e < 3; ++e) {
+      ++directed[{v[e], v[(e + 1) % 3]}];
+      parent[find(v[e])] = find(v[(e + 1) % 3]);
+    }
+    const glm::dvec3 a(prim.positions[prim.indices[t]]), b(prim.positions[prim.indices[t + 1]]),
+        c(prim.positions[prim.indices[t + 2]]);
+    r.signed_volume += glm::dot(a, glm::cross(b, c)) / 6.0;
+  }
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> undirected;
+  for (const auto& [e, n] : directed) {
+    if (n > 1) ++r.inconsistent_edges;
+    undirected[{std::min(e.first, e.second), std::max(e.first, e.second)}] += n;
+  }
+  r.edges = undirected.size();
+  for (const auto& [e, n] : undirected) {
+    if (n != 2) ++r.non_manifold_edges;
+  }
+  for (std::uint32_t i = 0; i < parent.size(); ++i) r.components += find(i) == i;
+  return r;
+}
+
+TEST(Tube, EveryYarnTubeIsClosedTwoManifoldAndFacesOut) {
+  for (const auto model : {LoopModel::smooth, LoopModel::paper}) {
+    CompileOptions o;
+    o.loop_model = model;
+    o.sides = 9;
+    const double d = 1.2;
+    const Fabric f = compile(test::jersey(5, 4, 4.5, 4.8, 2.4, d), o);
+    ASSERT_EQ(f.mesh.primitives.size(), 1u);
+    const auto& prim = f.mesh.primitives[0];
+    const TopologyReport r = topology(prim);
+    EXPECT_EQ(r.non_manifold_edges, 0u);
+    EXPECT_EQ(r.inconsistent_edges, 0u);
+    EXPECT_EQ(r.components, f.pieces.size());
+    // Each tube is a sphere topologically: V - E + F = 2 per component.
+    EXPECT_EQ(static_cast<long long>(r.welded_vertices) - static_cast<long long>(r.edges) +
+                  static_cast<long long>(r.triangles),
+              2 * static_cast<long long>(r.components));
+    // Outward: the enclosed volume is positive and close to pi r^2 times the yarn length.
+    double length = 0.0;
+    for (const auto& piece : f.pieces) length += nurbs::arc_length(piece.curve.curve, 0.0, 1.0);
+    const double expected = std::numbers::pi * 0.25 * d * d * length;
+    // A 9-gon holds 9/(2 pi) sin(2 pi / 9) of the circle's area.
+    const double polygon = 9.0 / (2.0 * std::numbers::pi) * std::sin(2.0 * std::numbers::pi / 9.0);
+    EXPECT_NEAR(r.signed_volume, expected * polygon, 0.02 * expected);
+    // Vertex normals are unit and agree with their triangles' winding.
+    for (const auto& n : prim.normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+    std::size_t against = 0;
+    for (std::size_t t = 0; t < prim.indices.size(); t += 3) {
+      const glm::vec3 a = prim.positions[prim.indices[t]], b = prim.positions[prim.indices[t + 1]],
+                      c = prim.positions[prim.indices[t + 2]];
+      const glm::vec3 face = glm::cross(b - a, c - a);
+      for (int k = 0; k < 3; ++k) against += glm::dot(face, prim.normals[prim.indices[t + k]]) <= 0.0f;
+    }
+    EXPECT_EQ(against, 0u);
+  }
+}
+
+TEST(Tube, WireframeHasRingsAndLongEdges) {
+  CompileOptions o;
+  o.view = View::wireframe;
+  o.sides = 6;
+  const Fabric f = compile(test::jersey(2, 1), o);
+  ASSERT_EQ(f.mesh.primitives.size(), 1u);
+  const auto& prim = f.mesh.primitives[0];
+  EXPECT_EQ(prim.mode, mesh::Mode::lines);
+  const std::size_t rings = f.pieces[0].frames.size();
+  EXPECT_EQ(prim.positions.size(), rings * 6);
+  EXPECT_EQ(prim.indices.size(), 2 * (rings * 6 + (rings - 1) * 6));
+}
+
+TEST(Tube, CentrelineViewIsALineStripPerPiece) {
+  CompileOptions o;
+  o.view = View::centreline;
+  const Fabric f = compile(test::jersey(3, 4), o);
+  ASSERT_EQ(f.mesh.primitives.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(f.mesh.primitives[i].mode, mesh::Mode::line_strip);
+    EXPECT_EQ(f.mesh.primitives[i].positions.size(), f.pieces[i].samples.size());
+  }
+}
+
+}  // namespace
+}  // namespace knitc
