@@ -207,11 +207,10 @@ void need_pattern(lua_State* L, const char* verb) {
 }
 
 long long whole_number(lua_State* L, int arg, const char* what, long long lo, long long hi) {
-  if (!lua_isinteger(L, arg)) {
-    if (lua_isnumber(L, arg)) fail(L, std::string(what) + " must be a whole number, not " + show(lua_tonumber(L, arg)));
-    fail(L, std::string(what) + " must be a whole number, not a " + luaL_typename(L, arg));
-  }
-  const long long v = lua_tointeger(L, arg);
+  if (lua_type(L, arg) != LUA_TNUMBER) fail(L, std::string(what) + " must be a whole number, not a " + luaL_typename(L, arg));
+  int is_integer = 0;
+  const long long v = lua_tointegerx(L, arg, &is_integer);  // 1e3 counts, 2.5 does not
+  if (is_integer == 0) fail(L, std::string(what) + " must be a whole number, not " + show(lua_tonumber(L, arg)));
   if (v < lo || v > hi)
     fail(L, std::string(what) + " is " + std::to_string(v) + "; it must be from " + std::to_string(lo) + " to " +
                 std::to_string(hi));

@@ -71,7 +71,11 @@ int load_text(lua_State* L) {
 // The pcall message handler: a non-string error object still gets a located message.
 int message_handler(lua_State* L) {
   if (lua_type(L, 1) == LUA_TSTRING) return 1;
-  luaL_where(L, 1);
+  // The innermost script line: level 1 is error() itself, a C function with no line.
+  lua_Debug ar;
+  int level = 1;
+  while (lua_getstack(L, level, &ar) != 0 && lua_getinfo(L, "Sl", &ar) != 0 && ar.currentline <= 0) ++level;
+  luaL_where(L, level);
   lua_pushstring(L, "error raised with a ");
   lua_pushstring(L, luaL_typename(L, 1));
   lua_pushstring(L, " value instead of a message; pass error() a string");

@@ -67,7 +67,9 @@ TEST(Layout, PlacesLoopsOnTheGaugeAndSharesEndPoints) {
     EXPECT_NEAR(l.data_points[0].x, l.wale * 4.5, 1e-12);
     EXPECT_NEAR(l.data_points[0].y, l.course * C, 1e-12);
     EXPECT_NEAR(l.data_points[8].y, l.course * C + 5.0, 1e-12);
-    if (l.wale + 1 < 7) EXPECT_EQ(l.data_points[16], layout.loops[i + 1].data_points[0]);
+    if (l.wale + 1 < 7) {
+      EXPECT_EQ(l.data_points[16], layout.loops[i + 1].data_points[0]);
+    }
   }
 }
 
@@ -136,7 +138,7 @@ std::vector<double> join_kinks(const Fabric& f) {
     const glm::dvec3 ta = glm::normalize(nurbs::derivatives(a.curve.curve, ua, 1)[1]);
     const glm::dvec3 tb = glm::normalize(nurbs::derivatives(b.curve.curve, ub, 1)[1]);
     EXPECT_LT(glm::distance(nurbs::evaluate(a.curve.curve, ua), nurbs::evaluate(b.curve.curve, ub)), 1e-9);
-    kinks.push_back(std::acos(std::clamp(glm::dot(ta, tb), -1.0, 1.0)) * 180.0 / std::numbers::pi);
+    kinks.push_back(std::atan2(glm::length(glm::cross(ta, tb)), glm::dot(ta, tb)) * 180.0 / std::numbers::pi);
   }
   return kinks;
 }
