@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -12,6 +13,7 @@
 #include <glm/common.hpp>
 
 #include "compile.hpp"
+#include "render.hpp"
 #include "runtime.hpp"
 #include "writers/writers.hpp"
 
@@ -20,14 +22,38 @@ namespace {
 constexpr int exit_pattern = 1;
 constexpr int exit_usage = 2;
 
-struct BuildArgs {
+struct Args {
   std::string pattern;
   std::string output;
   std::string centreline;
   knitc::CompileOptions compile;
+  knitc::render::RenderOptions render;
   bool stats = false;
   bool quiet = false;
 };
+
+// The pattern, or the exit code when it could not be had.
+std::variant<knitc::Pattern, int> load(const Args& args) {
+  try {
+    return knitc::runtime::run_pattern_file(args.pattern);
+  } catch (const knitc::runtime::PatternError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    return exit_pattern;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "knitc: {}\n", e.what());
+    return exit_usage;
+  }
+}
+
+int write(const std::vector<knitc::writers::OutputFile>& files) {
+  try {
+    knitc::writers::write_files(files);
+    return 0;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "knitc: {}\n", e.what());
+    return exit_usage;
+  }
+}
 
 void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric) {
   std::size_t vertices = 0, elements = 0;
@@ -51,33 +77,61 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric) {
              hi.x, hi.y, hi.z);
 }
 
-int build(const BuildArgs& args) {
-  knitc::Pattern pattern;
-  try {
-    pattern = knitc::runtime::run_pattern_file(args.pattern);
-  } catch (const knitc::runtime::PatternError& e) {
-    fmt::print(stderr, "{}\n", e.what());
-    return exit_pattern;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "knitc: {}\n", e.what());
-    return exit_usage;
-  }
+int build(const Args& args) {
+  auto loaded = load(args);
+  if (const int* code = std::get_if<int>(&loaded)) return *code;
+  const knitc::Pattern& pattern = std::get<knitc::Pattern>(loaded);
   const knitc::Fabric fabric = knitc::compile(pattern, args.compile);
   std::vector<knitc::writers::OutputFile> files;
   files.push_back({args.output, knitc::writers::glb(fabric.mesh, "knitc " KNITC_VERSION)});
   if (!args.centreline.empty())
     files.push_back({args.centreline, knitc::writers::centreline_json(pattern, fabric, args.compile.loop_model)});
+  if (const int code = write(files); code != 0) return code;
+  if (args.stats) print_stats(pattern, fabric);
+  if (!args.quiet && !args.stats) fmt::print(stderr, "knitc: wrote {} ({} loops)\n", args.output, fabric.layout.loops.size());
+  return 0;
+}
+
+int render(const Args& args) {
+  auto loaded = load(args);
+  if (const int* code = std::get_if<int>(&loaded)) return *code;
+  const knitc::Pattern& pattern = std::get<knitc::Pattern>(loaded);
+  const knitc::Fabric fabric = knitc::compile(pattern, args.compile);
+  std::string png;
   try {
-    knitc::writers::write_files(files);
+    png = knitc::render::png(fabric.mesh, args.render);
   } catch (const std::exception& e) {
-    fmt::print(stderr, "knitc: {}\n", e.what());
+    fmt::print(stderr, "knitc: cannot render: {}\n", e.what());
     return exit_usage;
   }
+  if (const int code = write({{args.output, std::move(png)}}); code != 0) return code;
   if (args.stats) print_stats(pattern, fabric);
-  if (!args.quiet && !args.stats) {
-    fmt::print(stderr, "knitc: wrote {} ({} loops)\n", args.output, fabric.layout.loops.size());
-  }
+  if (!args.quiet && !args.stats) fmt::print(stderr, "knitc: wrote {}\n", args.output);
   return 0;
+}
+
+// The options every command that compiles a pattern takes.
+void add_compile_options(CLI::App* cmd, Args& a) {
+  const std::map<std::string, knitc::yarn_paths::LoopModel> models{
+      {"paper", knitc::yarn_paths::LoopModel::paper}, {"smooth", knitc::yarn_paths::LoopModel::smooth}};
+  cmd->add_option("--loop-model", a.compile.loop_model,
+                  "smooth: one C2 curve per course (default); paper: the seed paper's curve per loop")
+      ->transform(CLI::CheckedTransformer(models, CLI::ignore_case));
+  const std::map<std::string, knitc::View> views{
+      {"surface", knitc::View::surface}, {"wireframe", knitc::View::wireframe}, {"centreline", knitc::View::centreline}};
+  cmd->add_option("--view", a.compile.view, "surface (default), wireframe or centreline")
+      ->transform(CLI::CheckedTransformer(views, CLI::ignore_case));
+  const std::map<std::string, knitc::nurbs::Parametrisation> params{
+      {"chord", knitc::nurbs::Parametrisation::chord_length},
+      {"centripetal", knitc::nurbs::Parametrisation::centripetal}};
+  cmd->add_option("--parameters", a.compile.parametrisation, "data point parameters: chord (default) or centripetal")
+      ->transform(CLI::CheckedTransformer(params, CLI::ignore_case));
+  cmd->add_option("--sides", a.compile.sides, "vertices around each tube ring (default 12)")->check(CLI::Range(3, 256));
+  cmd->add_option("--tolerance", a.compile.chord_tolerance,
+                  "chord error of the tube surface, as a fraction of the yarn diameter (default 0.01)")
+      ->check(CLI::Range(1e-4, 1.0));
+  cmd->add_flag("--stats", a.stats, "print counts and bounds of the result");
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing on success");
 }
 
 }  // namespace
@@ -87,31 +141,26 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "knitc " KNITC_VERSION);
   app.require_subcommand(1);
 
-  BuildArgs b;
-  auto* cmd = app.add_subcommand("build", "compile a pattern script into a glTF binary (.glb)");
-  cmd->add_option("pattern", b.pattern, "the pattern script (.lua)")->required();
-  cmd->add_option("-o,--output", b.output, "the .glb to write")->required();
-  const std::map<std::string, knitc::yarn_paths::LoopModel> models{
-      {"paper", knitc::yarn_paths::LoopModel::paper}, {"smooth", knitc::yarn_paths::LoopModel::smooth}};
-  cmd->add_option("--loop-model", b.compile.loop_model,
-                  "smooth: one C2 curve per course (default); paper: the seed paper's curve per loop")
-      ->transform(CLI::CheckedTransformer(models, CLI::ignore_case));
-  const std::map<std::string, knitc::View> views{
-      {"surface", knitc::View::surface}, {"wireframe", knitc::View::wireframe}, {"centreline", knitc::View::centreline}};
-  cmd->add_option("--view", b.compile.view, "surface (default), wireframe or centreline")
-      ->transform(CLI::CheckedTransformer(views, CLI::ignore_case));
-  const std::map<std::string, knitc::nurbs::Parametrisation> params{
-      {"chord", knitc::nurbs::Parametrisation::chord_length},
-      {"centripetal", knitc::nurbs::Parametrisation::centripetal}};
-  cmd->add_option("--parameters", b.compile.parametrisation, "data point parameters: chord (default) or centripetal")
-      ->transform(CLI::CheckedTransformer(params, CLI::ignore_case));
-  cmd->add_option("--centreline", b.centreline, "also write the centrelines and loop data points as JSON (mm)");
-  cmd->add_option("--sides", b.compile.sides, "vertices around each tube ring (default 12)")->check(CLI::Range(3, 256));
-  cmd->add_option("--tolerance", b.compile.chord_tolerance,
-                  "chord error of the tube surface, as a fraction of the yarn diameter (default 0.01)")
-      ->check(CLI::Range(1e-4, 1.0));
-  cmd->add_flag("--stats", b.stats, "print counts and bounds of the result");
-  cmd->add_flag("-q,--quiet", b.quiet, "print nothing on success");
+  Args b;
+  auto* build_cmd = app.add_subcommand("build", "compile a pattern script into a glTF binary (.glb)");
+  build_cmd->add_option("pattern", b.pattern, "the pattern script (.lua)")->required();
+  build_cmd->add_option("-o,--output", b.output, "the .glb to write")->required();
+  build_cmd->add_option("--centreline", b.centreline, "also write the centrelines and loop data points as JSON (mm)");
+  add_compile_options(build_cmd, b);
+
+  Args r;
+  auto* render_cmd = app.add_subcommand("render", "draw a lit preview of a pattern's fabric (.png)");
+  render_cmd->add_option("pattern", r.pattern, "the pattern script (.lua)")->required();
+  render_cmd->add_option("-o,--output", r.output, "the .png to write")->required();
+  std::string size = "960x720";
+  render_cmd->add_option("--size", size, "image size WxH of one view (default 960x720)");
+  const std::map<std::string, knitc::render::RenderOptions::Side> sides{
+      {"face", knitc::render::RenderOptions::Side::face},
+      {"back", knitc::render::RenderOptions::Side::back},
+      {"both", knitc::render::RenderOptions::Side::both}};
+  render_cmd->add_option("--side", r.render.side, "face (default), back, or both side by side")
+      ->transform(CLI::CheckedTransformer(sides, CLI::ignore_case));
+  add_compile_options(render_cmd, r);
 
   try {
     app.parse(argc, argv);
@@ -125,10 +174,23 @@ int main(int argc, char** argv) {
     app.exit(e);
     return exit_usage;
   }
-  if (!b.centreline.empty() && b.centreline == b.output) {
-    fmt::print(stderr, "knitc: --centreline and -o name the same file\n");
-    return exit_usage;
+  if (build_cmd->parsed()) {
+    if (!b.centreline.empty() && b.centreline == b.output) {
+      fmt::print(stderr, "knitc: --centreline and -o name the same file\n");
+      return exit_usage;
+    }
+    return build(b);
   }
-  if (cmd->parsed()) return build(b);
+  if (render_cmd->parsed()) {
+    int w = 0, h = 0;
+    char rest = 0;
+    if (std::sscanf(size.c_str(), "%dx%d%c", &w, &h, &rest) != 2 || w < 16 || h < 16 || w > 8192 || h > 8192) {
+      fmt::print(stderr, "knitc: --size is \"{}\"; give WxH with each from 16 to 8192, e.g. 960x720\n", size);
+      return exit_usage;
+    }
+    r.render.width = w;
+    r.render.height = h;
+    return render(r);
+  }
   return exit_usage;
 }

@@ -66,7 +66,7 @@ std::string png(const mesh::Mesh& mesh, const RenderOptions& options) {
   const float aspect = static_cast<float>(w) / static_cast<float>(h);
   const auto draw_view = [&](bool from_back, int x0) {
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    drawer.draw(mesh, detail::frame(box, from_back, aspect), static_cast<float>(k));
+    drawer.draw(mesh, detail::frame(box, from_back, aspect), 1.5f * static_cast<float>(k));
     detail::resolve(context.finish(), w, h, k, image, x0);
   };
   switch (options.side) {

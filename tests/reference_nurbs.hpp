@@ -173,6 +173,7 @@ inline glm::dvec3 derivative(const knitc::nurbs::Curve& c, double u, int k) {
       w[j] += wi * N;
     }
   }
+  if (c.weights.empty()) return A[k];  // non-rational: w = 1 and its derivatives vanish
   const double binom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
   glm::dvec3 C[4];
   for (int j = 0; j <= k; ++j) {
