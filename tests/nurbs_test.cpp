@@ -432,7 +432,8 @@ TEST(NurbsDerivatives, CurvatureAndTorsionFollowTheirFormulas) {
   EXPECT_LE(tau.error, 1e-9) << tau.where;
 
   // A straight line has no curvature, and a planar curve no torsion.
-  const std::vector<Point> line = {Point(0, 0, 0), Point(1, 2, 3), Point(2.5, 5, 7.5), Point(3, 6, 9), Point(5, 10, 15)};
+  const std::vector<Point> line = {Point(0, 0, 0), Point(1, 2, 3), Point(2.5, 5, 7.5), Point(3, 6, 9),
+                                   Point(5, 10, 15)};
   const auto li = interpolate(line, Parametrisation::chord_length);
   const std::vector<Point> planar = {Point(0, 0, 1), Point(1, 2, 1), Point(3, -1, 1), Point(4, 4, 1), Point(6, 0, 1)};
   const auto pl = interpolate(planar, Parametrisation::centripetal);
@@ -866,7 +867,8 @@ TEST(NurbsInterpolate, VeryUnevenSpacing) {
         const auto ref = reference::interpolate(q, par == Parametrisation::centripetal);
         const double cscale = magnitude(ref.control);
         for (std::size_t i = 0; i < q.size(); ++i)
-          EXPECT_LE(glm::distance(r.curve.points[i], ref.control[i]), 1e-9 * cscale) << where << ", control point " << i;
+          EXPECT_LE(glm::distance(r.curve.points[i], ref.control[i]), 1e-9 * cscale)
+              << where << ", control point " << i;
       }
     }
   }
@@ -1012,7 +1014,8 @@ TEST(NurbsInterpolate, RejectsTooFewPointsAndConsecutiveDuplicates) {
 TEST(NurbsIsValid, AcceptsInterpolantsAndGoodCurvesAndRejectsBrokenOnes) {
   std::mt19937 rng(1313);
   for (int size = 2; size <= 40; ++size)
-    for (const auto par : both_parametrisations) EXPECT_TRUE(nurbs::is_valid(interpolate(random_walk(rng, size), par).curve));
+    for (const auto par : both_parametrisations)
+      EXPECT_TRUE(nurbs::is_valid(interpolate(random_walk(rng, size), par).curve)) << size << " points";
   EXPECT_TRUE(nurbs::is_valid(quarter_circle()));
   for (int p = 1; p <= nurbs::max_degree; ++p)
     EXPECT_TRUE(nurbs::is_valid(random_curve(rng, p, p + 6, true, p, -3.0, -1.0))) << p;
