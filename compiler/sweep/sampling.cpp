@@ -43,8 +43,9 @@ std::vector<double> sample_parameters(const nurbs::Curve& c, double u0, double u
     }
     a = b;
   };
-  for (double k : c.knots) {
-    if (k > a && k < u1) add_span(k);
+  // Only the knots inside [u0, u1]: a course's curve has thousands, a loop a few.
+  for (std::size_t i = static_cast<std::size_t>(nurbs::find_span(c, u0)) + 1; i < c.knots.size() && c.knots[i] < u1; ++i) {
+    if (c.knots[i] > a) add_span(c.knots[i]);
   }
   add_span(u1);
 
