@@ -1,6 +1,5 @@
 // knitc: the command line. The only place that wires runtime, compiler and writers.
 // Exit codes: 0 success, 1 a problem in the pattern, 2 bad command-line use.
-#include <algorithm>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -26,22 +25,35 @@ struct Args {
   std::string pattern;
   std::string output;
   std::string centreline;
+  knitc::runtime::RunOptions run;
   knitc::CompileOptions compile;
   knitc::render::RenderOptions render;
+  std::string size = "960x720";
   bool stats = false;
   bool quiet = false;
 };
 
-// The pattern, or the exit code when it could not be had.
+// The pattern, or the exit code when it could not be had. Warnings go to stderr.
 std::variant<knitc::Pattern, int> load(const Args& args) {
   try {
-    return knitc::runtime::run_pattern_file(args.pattern);
+    auto result = knitc::runtime::run_pattern_file(args.pattern, args.run);
+    for (const auto& w : result.warnings) fmt::print(stderr, "{}\n", w);
+    return std::move(result.pattern);
   } catch (const knitc::runtime::PatternError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return exit_pattern;
   } catch (const std::exception& e) {
     fmt::print(stderr, "knitc: {}\n", e.what());
     return exit_usage;
+  }
+}
+
+std::variant<knitc::Fabric, int> compile(const knitc::Pattern& pattern, const Args& args) {
+  try {
+    return knitc::compile(pattern, args.compile);
+  } catch (const knitc::CompileError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    return exit_pattern;
   }
 }
 
@@ -69,19 +81,21 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric) {
   std::size_t samples = 0;
   for (const auto& piece : fabric.pieces) samples += piece.samples.size();
   fmt::print(stderr, "pattern     {}\n", pattern.name);
-  fmt::print(stderr, "courses     {}\nwales       {}\nloops       {}\n", fabric.layout.courses,
-             fabric.layout.wales, fabric.layout.loops.size());
-  fmt::print(stderr, "yarn pieces {}\nsamples     {}\nvertices    {}\nindices     {}\n",
-             fabric.pieces.size(), samples, vertices, elements);
-  fmt::print(stderr, "bounds mm   [{:.3f}, {:.3f}, {:.3f}] .. [{:.3f}, {:.3f}, {:.3f}]\n", lo.x, lo.y, lo.z,
-             hi.x, hi.y, hi.z);
+  fmt::print(stderr, "courses     {}\nwales       {}\nloops       {}\n", fabric.layout.courses, fabric.layout.wales,
+             fabric.layout.loops.size());
+  fmt::print(stderr, "yarn pieces {}\nsamples     {}\nvertices    {}\nindices     {}\n", fabric.pieces.size(), samples,
+             vertices, elements);
+  fmt::print(stderr, "bounds mm   [{:.3f}, {:.3f}, {:.3f}] .. [{:.3f}, {:.3f}, {:.3f}]\n", lo.x, lo.y, lo.z, hi.x, hi.y,
+             hi.z);
 }
 
 int build(const Args& args) {
   auto loaded = load(args);
   if (const int* code = std::get_if<int>(&loaded)) return *code;
-  const knitc::Pattern& pattern = std::get<knitc::Pattern>(loaded);
-  const knitc::Fabric fabric = knitc::compile(pattern, args.compile);
+  const auto& pattern = std::get<knitc::Pattern>(loaded);
+  auto compiled = compile(pattern, args);
+  if (const int* code = std::get_if<int>(&compiled)) return *code;
+  const auto& fabric = std::get<knitc::Fabric>(compiled);
   std::vector<knitc::writers::OutputFile> files;
   files.push_back({args.output, knitc::writers::glb(fabric.mesh, "knitc " KNITC_VERSION)});
   if (!args.centreline.empty())
@@ -95,8 +109,10 @@ int build(const Args& args) {
 int render(const Args& args) {
   auto loaded = load(args);
   if (const int* code = std::get_if<int>(&loaded)) return *code;
-  const knitc::Pattern& pattern = std::get<knitc::Pattern>(loaded);
-  const knitc::Fabric fabric = knitc::compile(pattern, args.compile);
+  const auto& pattern = std::get<knitc::Pattern>(loaded);
+  auto compiled = compile(pattern, args);
+  if (const int* code = std::get_if<int>(&compiled)) return *code;
+  const auto& fabric = std::get<knitc::Fabric>(compiled);
   std::string png;
   try {
     png = knitc::render::png(fabric.mesh, args.render);
@@ -110,7 +126,32 @@ int render(const Args& args) {
   return 0;
 }
 
-// The options every command that compiles a pattern takes.
+int chart(const Args& args) {
+  auto loaded = load(args);
+  if (const int* code = std::get_if<int>(&loaded)) return *code;
+  fmt::print("{}", knitc::writers::chart_text(std::get<knitc::Pattern>(loaded)));
+  return 0;
+}
+
+int check(const Args& args) {
+  auto loaded = load(args);
+  if (const int* code = std::get_if<int>(&loaded)) return *code;
+  const auto& p = std::get<knitc::Pattern>(loaded);
+  if (!args.quiet) {
+    fmt::print(stderr, "{}: {} rows, {} stitches cast on, {} live at the end{}\n", args.pattern, p.courses.size(),
+               p.cast_on, knitc::produced(p.courses.back()), p.bound_off ? " (bound off)" : "");
+  }
+  return 0;
+}
+
+// What every command that runs a pattern takes.
+void add_pattern_options(CLI::App* cmd, Args& a) {
+  cmd->add_option("pattern", a.pattern, "the pattern script (.lua)")->required();
+  cmd->add_option("-I,--include", a.run.module_dirs, "a folder `require` searches first (repeatable)");
+  cmd->add_option("--seed", a.run.seed, "math.random's seed, over the pattern's own");
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing on success");
+}
+
 void add_compile_options(CLI::App* cmd, Args& a) {
   const std::map<std::string, knitc::yarn_paths::LoopModel> models{
       {"paper", knitc::yarn_paths::LoopModel::paper}, {"smooth", knitc::yarn_paths::LoopModel::smooth}};
@@ -131,7 +172,6 @@ void add_compile_options(CLI::App* cmd, Args& a) {
                   "chord error of the tube surface, as a fraction of the yarn diameter (default 0.01)")
       ->check(CLI::Range(1e-4, 1.0));
   cmd->add_flag("--stats", a.stats, "print counts and bounds of the result");
-  cmd->add_flag("-q,--quiet", a.quiet, "print nothing on success");
 }
 
 }  // namespace
@@ -143,17 +183,16 @@ int main(int argc, char** argv) {
 
   Args b;
   auto* build_cmd = app.add_subcommand("build", "compile a pattern script into a glTF binary (.glb)");
-  build_cmd->add_option("pattern", b.pattern, "the pattern script (.lua)")->required();
+  add_pattern_options(build_cmd, b);
   build_cmd->add_option("-o,--output", b.output, "the .glb to write")->required();
   build_cmd->add_option("--centreline", b.centreline, "also write the centrelines and loop data points as JSON (mm)");
   add_compile_options(build_cmd, b);
 
   Args r;
   auto* render_cmd = app.add_subcommand("render", "draw a lit preview of a pattern's fabric (.png)");
-  render_cmd->add_option("pattern", r.pattern, "the pattern script (.lua)")->required();
+  add_pattern_options(render_cmd, r);
   render_cmd->add_option("-o,--output", r.output, "the .png to write")->required();
-  std::string size = "960x720";
-  render_cmd->add_option("--size", size, "image size WxH of one view (default 960x720)");
+  render_cmd->add_option("--size", r.size, "image size WxH of one view (default 960x720)");
   const std::map<std::string, knitc::render::RenderOptions::Side> sides{
       {"face", knitc::render::RenderOptions::Side::face},
       {"back", knitc::render::RenderOptions::Side::back},
@@ -161,6 +200,16 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--side", r.render.side, "face (default), back, or both side by side")
       ->transform(CLI::CheckedTransformer(sides, CLI::ignore_case));
   add_compile_options(render_cmd, r);
+
+  Args c;
+  auto* chart_cmd = app.add_subcommand("chart", "print the pattern's stitch chart as text");
+  add_pattern_options(chart_cmd, c);
+
+  Args k;
+  auto* check_cmd = app.add_subcommand("check", "validate a pattern only (fast; for editors and hooks)");
+  add_pattern_options(check_cmd, k);
+
+  auto* reference_cmd = app.add_subcommand("reference", "print the pattern language reference (docs/language.md)");
 
   try {
     app.parse(argc, argv);
@@ -184,13 +233,19 @@ int main(int argc, char** argv) {
   if (render_cmd->parsed()) {
     int w = 0, h = 0;
     char rest = 0;
-    if (std::sscanf(size.c_str(), "%dx%d%c", &w, &h, &rest) != 2 || w < 16 || h < 16 || w > 8192 || h > 8192) {
-      fmt::print(stderr, "knitc: --size is \"{}\"; give WxH with each from 16 to 8192, e.g. 960x720\n", size);
+    if (std::sscanf(r.size.c_str(), "%dx%d%c", &w, &h, &rest) != 2 || w < 16 || h < 16 || w > 8192 || h > 8192) {
+      fmt::print(stderr, "knitc: --size is \"{}\"; give WxH with each from 16 to 8192, e.g. 960x720\n", r.size);
       return exit_usage;
     }
     r.render.width = w;
     r.render.height = h;
     return render(r);
+  }
+  if (chart_cmd->parsed()) return chart(c);
+  if (check_cmd->parsed()) return check(k);
+  if (reference_cmd->parsed()) {
+    fmt::print("{}", knitc::runtime::language_reference());
+    return 0;
   }
   return exit_usage;
 }

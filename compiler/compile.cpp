@@ -99,6 +99,15 @@ mesh::Mesh build_mesh(const Pattern& pattern, const std::vector<CurvePiece>& pie
 
 Fabric compile(const Pattern& pattern, const CompileOptions& options) {
   assert(options.sides >= 3 && options.chord_tolerance > 0.0);
+  for (std::size_t row = 0; row < pattern.courses.size(); ++row) {
+    const Course& c = pattern.courses[row];
+    for (const Op& op : c.ops) {
+      if (!layout::can_lay_out(op.stitch))
+        throw CompileError(c.where.file + ":" + std::to_string(c.where.line) + ": row " + std::to_string(row + 1) +
+                           " has " + std::string(stitch(op.stitch).name) +
+                           ", which knitc cannot lay out in 3D yet (only k and p so far); knitc check and knitc chart accept it");
+    }
+  }
   Fabric fabric;
   fabric.layout = layout::lay_out(pattern);
   auto paths = yarn_paths::trace(fabric.layout, options.loop_model);

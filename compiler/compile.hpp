@@ -2,6 +2,7 @@
 // sweep -> Mesh. Each stage is a function of plain data; this file only runs them in turn.
 #pragma once
 
+#include <stdexcept>
 #include <vector>
 
 #include "layout/layout.hpp"
@@ -48,7 +49,14 @@ struct Fabric {
 // for the smooth one.
 sweep::FrameKind frame_kind(yarn_paths::LoopModel model);
 
-// Compiles a validated pattern (the runtime validates) into geometry.
+// A pattern the compiler cannot make geometry for (yet). what() is "file:line: ...".
+class CompileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Compiles a validated pattern (the runtime validates) into geometry. Throws
+// CompileError for stitches the layout has no template for yet.
 Fabric compile(const Pattern& pattern, const CompileOptions& options);
 
 // "#rrggbb" to linear RGB in [0, 1] (the sRGB transfer function undone), as glTF's

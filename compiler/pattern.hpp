@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "stitches/stitches.hpp"
+
 namespace knitc {
 
 // Where a thing was said in a pattern script, for error messages: "file:line".
@@ -21,21 +23,33 @@ struct Gauge {
   double thickness = 2.0;
   static constexpr double course_spacing_ratio = 0.86;  // C / H, the seed paper's value
   double course_spacing() const { return course_spacing_ratio * loop_height; }
+  bool operator==(const Gauge&) const = default;
 };
 
 struct Yarn {
-  std::string id;        // the name the script gives it, e.g. "A"
-  double diameter = 1.0; // mm
-  std::string color;     // CSS hex, "#rrggbb"
+  std::string id;         // the name the script gives it, e.g. "A"
+  double diameter = 1.0;  // mm
+  std::string color;      // CSS hex, "#rrggbb"
+  bool operator==(const Yarn&) const = default;
 };
 
-enum class Stitch { knit };
-
-// One course, in face view, left to right: stitches[i] is worked on wale i.
-struct Course {
-  std::vector<Stitch> stitches;
+// One stitch of a course, as it shows on the face.
+struct Op {
+  StitchId stitch = 0;
   int yarn = 0;  // index into Pattern::yarns
-  SourceLocation where;
+  bool operator==(const Op&) const = default;
+};
+
+enum class Side { right, wrong };  // the side facing the knitter while the row is worked
+
+// One course in face view, left to right: ops[0] is at the left edge seen from the face.
+// Each op works stitch(op).consumes live stitches of the course below, in order, and
+// leaves stitch(op).produces loops.
+struct Course {
+  std::vector<Op> ops;
+  Side side = Side::right;  // wrong-side rows are worked left to right, seen from the back
+  SourceLocation where;     // not part of the fabric: equality ignores it
+  bool operator==(const Course& o) const { return ops == o.ops && side == o.side; }
 };
 
 enum class Knitting { round, flat };
@@ -46,7 +60,15 @@ struct Pattern {
   std::vector<Yarn> yarns;  // sorted by id, so no script table order leaks out
   Knitting knitting = Knitting::round;
   int cast_on = 0;          // live stitches before the first course
+  int cast_on_yarn = 0;
   std::vector<Course> courses;
+  bool bound_off = false;   // the last course's loops are bound off
+  bool operator==(const Pattern&) const = default;
 };
+
+// Live stitches after the course: the loops it leaves on the needle.
+int produced(const Course& course);
+// Live stitches the course works.
+int consumed(const Course& course);
 
 }  // namespace knitc

@@ -119,7 +119,7 @@ lua_State* open_sandbox(SandboxState& state) {
   // math.random: the same numbers on every run.
   lua_getglobal(L, LUA_MATHLIBNAME);
   lua_getfield(L, -1, "randomseed");
-  lua_pushinteger(L, 0);
+  lua_pushinteger(L, state.seed);
   lua_call(L, 1, 0);
   lua_pop(L, 1);
   lua_sethook(L, count_hook, LUA_MASKCOUNT, hook_every);

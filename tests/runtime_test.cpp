@@ -21,7 +21,9 @@ const char* header = R"(pattern {
 // The message a script fails with, or "" if it runs.
 std::string error_of(const std::string& source, const runtime::Limits& limits = {}) {
   try {
-    runtime::run_pattern(source, "t.lua", limits);
+    runtime::RunOptions options;
+    options.limits = limits;
+    runtime::run_pattern(source, "t.lua", options);
   } catch (const PatternError& e) {
     return e.what();
   }
@@ -29,7 +31,7 @@ std::string error_of(const std::string& source, const runtime::Limits& limits = 
 }
 
 TEST(Runtime, JerseyScriptBecomesAPattern) {
-  const Pattern p = runtime::run_pattern(std::string(header) + "cast_on(20)\nrows(24, \"k\")\n", "j.lua");
+  const Pattern p = runtime::run_pattern(std::string(header) + "cast_on(20)\nrows(24, \"k\")\n", "j.lua").pattern;
   EXPECT_EQ(p.name, "jersey");
   EXPECT_DOUBLE_EQ(p.gauge.loop_width, 4.0);
   EXPECT_DOUBLE_EQ(p.gauge.loop_height, 4.2);
@@ -41,7 +43,7 @@ TEST(Runtime, JerseyScriptBecomesAPattern) {
   EXPECT_EQ(p.cast_on, 20);
   ASSERT_EQ(p.courses.size(), 24u);
   for (const auto& c : p.courses) {
-    EXPECT_EQ(c.stitches.size(), 20u);
+    EXPECT_EQ(c.ops.size(), 20u);
     EXPECT_EQ(c.where.file, "j.lua");
     EXPECT_EQ(c.where.line, 7);
   }
@@ -50,7 +52,7 @@ TEST(Runtime, JerseyScriptBecomesAPattern) {
 TEST(Runtime, GaugePerTenCentimetres) {
   const Pattern p = runtime::run_pattern(R"(pattern { gauge = { stitches = 20, rows = 25 },
     yarns = { B = { diameter = 1.5 }, A = { diameter = 2.0, color = "#fff" } } }
-cast_on(4) row "k2" for i = 1, 3 do row "k" end)", "g.lua");
+cast_on(4) row "k2" for i = 1, 3 do row "k" end)", "g.lua").pattern;
   EXPECT_DOUBLE_EQ(p.gauge.loop_width, 5.0);
   EXPECT_NEAR(p.gauge.course_spacing(), 4.0, 1e-12);
   EXPECT_DOUBLE_EQ(p.gauge.thickness, 4.0);  // two of the thickest yarn

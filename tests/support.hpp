@@ -70,7 +70,7 @@ inline std::string jersey_source(int stitches, int rows, double w = 4.0, double 
 }
 
 inline Pattern jersey(int stitches, int rows, double w = 4.0, double h = 4.2, double t = 2.0, double d = 1.0) {
-  return runtime::run_pattern(jersey_source(stitches, rows, w, h, t, d), "jersey.lua");
+  return runtime::run_pattern(jersey_source(stitches, rows, w, h, t, d), "jersey.lua").pattern;
 }
 
 }  // namespace knitc::test

@@ -1,5 +1,7 @@
 #include "layout/layout.hpp"
 
+#include <cassert>
+
 namespace knitc::layout {
 
 namespace {
@@ -23,26 +25,33 @@ std::array<glm::dvec3, loop_points> plain_loop(const Gauge& g) {
   return p;
 }
 
+bool can_lay_out(StitchId id) {
+  const StitchFamily f = stitch(id).family;
+  return f == StitchFamily::knit || f == StitchFamily::purl;
+}
+
 Layout lay_out(const Pattern& pattern) {
   Layout layout;
   layout.courses = static_cast<int>(pattern.courses.size());
   const auto loop = plain_loop(pattern.gauge);
   const double W = pattern.gauge.loop_width, C = pattern.gauge.course_spacing();
   std::size_t total = 0;
-  for (const Course& course : pattern.courses) total += course.stitches.size();
+  for (const Course& course : pattern.courses) total += course.ops.size();
   layout.loops.reserve(total);
   for (int c = 0; c < layout.courses; ++c) {
     const Course& course = pattern.courses[c];
-    const int wales = static_cast<int>(course.stitches.size());
+    const int wales = static_cast<int>(course.ops.size());
     layout.wales = std::max(layout.wales, wales);
     for (int w = 0; w < wales; ++w) {
       Loop l;
       l.course = c;
       l.wale = w;
-      l.stitch = course.stitches[w];
-      l.yarn = course.yarn;
+      assert(can_lay_out(course.ops[w].stitch));
+      l.stitch = course.ops[w].stitch;
+      l.yarn = course.ops[w].yarn;
+      const double z = stitch(l.stitch).family == StitchFamily::purl ? -1.0 : 1.0;
       const glm::dvec3 origin(w * W, c * C, 0.0);
-      for (int i = 0; i < loop_points; ++i) l.data_points[i] = origin + loop[i];
+      for (int i = 0; i < loop_points; ++i) l.data_points[i] = origin + loop[i] * glm::dvec3(1.0, 1.0, z);
       // Exactly the next loop's P0, not origin + W rounded differently.
       l.data_points[loop_points - 1] = glm::dvec3((w + 1) * W, c * C, 0.0);
       layout.loops.push_back(l);

@@ -25,7 +25,7 @@ std::array<glm::dvec3, loop_points> plain_loop(const Gauge& gauge);
 struct Loop {
   int course = 0;
   int wale = 0;
-  Stitch stitch = Stitch::knit;
+  StitchId stitch = 0;
   int yarn = 0;  // index into Pattern::yarns
   std::array<glm::dvec3, loop_points> data_points;  // mm, fabric coordinates
 };
@@ -37,7 +37,11 @@ struct Layout {
 };
 
 // Places loop (course c, wale w) with its P0 at (w W, c C, 0). Loops of a course share
-// end points: P16 of one is P0 of the next.
+// end points: P16 of one is P0 of the next. A purl loop is the knit loop seen from the
+// back: its z is mirrored. The pattern must hold only stitches can_lay_out accepts.
 Layout lay_out(const Pattern& pattern);
+
+// Whether the layout has a template for the stitch yet (knit and purl so far).
+bool can_lay_out(StitchId stitch);
 
 }  // namespace knitc::layout

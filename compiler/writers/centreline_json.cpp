@@ -17,13 +17,6 @@ double micro(double v) {
 
 json xyz(const glm::dvec3& p) { return json::array({micro(p.x), micro(p.y), micro(p.z)}); }
 
-const char* stitch_name(Stitch s) {
-  switch (s) {
-    case Stitch::knit: return "k";
-  }
-  return "?";
-}
-
 }  // namespace
 
 std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_paths::LoopModel model) {
@@ -59,7 +52,7 @@ std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_p
         samples.push_back(xyz(piece.frames.origin[s]));
       loops[index] = {{"course", loop.course},
                       {"wale", loop.wale},
-                      {"stitch", stitch_name(loop.stitch)},
+                      {"stitch", std::string(stitch(loop.stitch).name)},
                       {"yarn", pattern.yarns[loop.yarn].id},
                       {"data_points", std::move(data)},
                       {"samples", std::move(samples)}};

@@ -24,6 +24,12 @@ std::string glb(const mesh::Mesh& mesh, const std::string& generator);
 // each piece as [first point index, point count].
 std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_paths::LoopModel model);
 
+// The pattern's stitch chart as text: one line per course, top course first, chart
+// symbols from the default legend, each row's number on the side it is read from (right
+// for right-side rows, left for wrong-side rows); yarn ids after each row when the
+// pattern changes yarn.
+std::string chart_text(const Pattern& pattern);
+
 struct OutputFile {
   std::string path;
   std::string bytes;

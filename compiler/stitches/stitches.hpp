@@ -1,0 +1,68 @@
+// The stitch vocabulary, declared once as data: every stitch's written name and
+// aliases, chart symbol, Lua identifier, stitch counts, and the facts its geometry and
+// the wrong-side bookkeeping need. The pattern language, `knitc chart`, the reference
+// docs and the error hints are all read from this table.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace knitc {
+
+// An index into stitch_table().
+using StitchId = std::uint16_t;
+
+enum class StitchFamily : std::uint8_t {
+  knit,       // a new loop pulled through from the back: a V on the face
+  purl,       // pulled through from the front: a bump on the face
+  yarn_over,  // a new loop with no parent: an eyelet
+  decrease,   // several old loops gathered into one new loop
+  slip,       // the old loop moves across unworked; the yarn floats past it
+  tuck,       // the yarn is caught on the needle; the old loop stays and is knitted later
+  cable,      // stitches crossed over their neighbours
+  no_stitch,  // a chart's grey square: a placeholder, no loop
+};
+
+enum class Lean : std::uint8_t { none, left, right, centre };
+
+struct Cable {
+  int held = 0;        // stitches slipped to the cable needle: the rightmost `held` of the block
+  bool front = false;  // cable needle held in front (the held stitches cross over)
+  // Twists (T): the travelling stitches are knit, the rest purled. In F twists the held
+  // stitches travel; in B twists the held stitches are the purls.
+  bool purl_background = false;
+};
+
+struct StitchDef {
+  std::string_view name;         // canonical written name, as `knitc chart` and docs print it
+  std::string_view aliases;      // other written spellings, separated by '|'
+  std::string_view symbol;       // chart symbol (the name is accepted in charts too)
+  std::string_view identifier;   // the Lua global of the plain form, e.g. course { k, p }
+  int consumes = 1;              // live stitches it works
+  int produces = 1;              // loops it leaves on the needle
+  bool counted = false;          // takes a repeat count: k2, p3, yo2, sl2 wyif
+  StitchFamily family = StitchFamily::knit;
+  Lean lean = Lean::none;
+  Cable cable;                   // for the cable family
+  // The stitch as it shows on the face when worked on a wrong-side row (k shows as p);
+  // empty if it has no wrong-side form.
+  std::string_view wrong_side_face;
+  std::string_view summary;      // one line for the reference docs
+};
+
+std::span<const StitchDef> stitch_table();
+const StitchDef& stitch(StitchId id);
+std::optional<StitchId> find_stitch(std::string_view name_or_alias);  // case-insensitive
+StitchId stitch_id(std::string_view canonical_name);                    // asserts it exists
+// The face-view stitch for `id` worked on a wrong-side row, if it has one.
+std::optional<StitchId> wrong_side_face(StitchId id);
+// The known name or alias nearest to `word` (edit distance), for "did you mean" hints.
+std::string nearest_stitch_name(std::string_view word);
+
+// Edit distance (Levenshtein, case-insensitive), for hints.
+int edit_distance(std::string_view a, std::string_view b);
+
+}  // namespace knitc

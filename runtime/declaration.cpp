@@ -1,0 +1,213 @@
+// pattern { name = ..., gauge = ..., yarns = ..., knitting = ..., seed = ... }
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "script.hpp"
+
+namespace knitc::runtime {
+
+namespace {
+
+// Standard yarn weights (Craft Yarn Council) to a round diameter: 0.85 x 25.4 / WPI at
+// the middle of each weight's wraps-per-inch range. Wrapping flattens the yarn, so WPI
+// overstates the round diameter; 0.85 is the flattening assumed.
+struct Weight {
+  const char* name;
+  const char* aliases;  // '|'-separated
+  double wpi;
+};
+constexpr std::array<Weight, 8> weights{{
+    {"lace", "", 35.0},
+    {"super fine", "fingering|sock", 22.0},
+    {"fine", "sport", 15.0},
+    {"light", "dk", 13.0},
+    {"medium", "worsted|aran", 10.5},
+    {"bulky", "chunky", 7.5},
+    {"super bulky", "", 5.5},
+    {"jumbo", "", 4.0},
+}};
+constexpr double wpi_flattening = 0.85;
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+std::optional<double> weight_diameter(const std::string& name) {
+  const std::string key = lower(name);
+  for (const Weight& w : weights) {
+    std::string spellings = std::string(w.name) + "|" + w.aliases;
+    std::size_t start = 0;
+    while (start <= spellings.size()) {
+      const std::size_t bar = std::min(spellings.find('|', start), spellings.size());
+      if (spellings.substr(start, bar - start) == key) return wpi_flattening * 25.4 / w.wpi;
+      start = bar + 1;
+    }
+  }
+  return std::nullopt;
+}
+
+std::string weight_names() {
+  std::string out;
+  for (const Weight& w : weights) {
+    out += (out.empty() ? "" : ", ") + std::string(w.name);
+    if (*w.aliases != '\0') {
+      std::string a = w.aliases;
+      std::replace(a.begin(), a.end(), '|', '/');
+      out += " (" + a + ")";
+    }
+  }
+  return out;
+}
+
+double in_range(lua_State* L, double v, const std::string& what, double lo, double hi, const char* unit) {
+  if (std::isnan(v) || v <= lo || v > hi)
+    fail(L, what + " is " + (std::isnan(v) ? std::string("NaN") : show(v) + unit) + "; it must be more than " +
+                show(lo) + unit + " and at most " + show(hi) + unit);
+  return v;
+}
+
+std::optional<std::string> normal_hex_color(const std::string& s) {
+  const auto hex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
+  if ((s.size() != 7 && s.size() != 4) || s[0] != '#' || !std::all_of(s.begin() + 1, s.end(), hex)) return std::nullopt;
+  std::string out = "#";
+  for (std::size_t i = 1; i < s.size(); ++i) out += std::string(s.size() == 4 ? 2 : 1, static_cast<char>(std::tolower(s[i])));
+  return out;
+}
+
+bool is_identifier(const std::string& s) {
+  if (s.empty() || s.size() > 32 || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+  return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+}
+
+void read_yarns(lua_State* L, int index, Pattern& p) {
+  lua_getfield(L, index, "yarns");
+  if (!lua_istable(L, -1))
+    fail(L, "pattern{} needs yarns, e.g. yarns = { A = { diameter = 1.0, color = \"#d9c8a9\" } }");
+  const int yarns = lua_gettop(L);
+  for (const std::string& id : sorted_keys(L, yarns, "yarns")) {
+    if (!is_identifier(id)) fail(L, "yarn name '" + id + "' must be a short name of letters, digits and _, such as A or MC");
+    if (find_stitch(id)) fail(L, "yarn name '" + id + "' is also a stitch; name it otherwise, e.g. " + id + "1");
+    lua_getfield(L, yarns, id.c_str());
+    if (!lua_istable(L, -1)) fail(L, "yarns." + id + " must be a table such as { diameter = 1.0, color = \"#d9c8a9\" }");
+    const int t = lua_gettop(L);
+    const std::string name = "yarns." + id;
+    only_known_keys(L, t, name, {"diameter", "weight", "color"});
+    Yarn y;
+    y.id = id;
+    const auto d = number_field(L, t, name, "diameter");
+    const auto weight = string_field(L, t, name, "weight");
+    if (d && weight) fail(L, name + " gives both diameter and weight; give one");
+    if (weight) {
+      const auto wd = weight_diameter(*weight);
+      if (!wd) fail(L, name + ".weight is \"" + *weight + "\"; known weights: " + weight_names());
+      y.diameter = *wd;
+    } else if (d) {
+      y.diameter = in_range(L, *d, name + ".diameter", 0.0, 30.0, " mm");
+    } else {
+      fail(L, name + " needs a diameter in mm or a weight, e.g. diameter = 1.0 or weight = \"dk\"");
+    }
+    const std::string color = string_field(L, t, name, "color").value_or("#d9c8a9");
+    const auto hex = normal_hex_color(color);
+    if (!hex) fail(L, name + ".color is \"" + color + "\"; give a CSS hex colour such as \"#d9c8a9\"");
+    y.color = *hex;
+    p.yarns.push_back(y);
+    lua_pop(L, 1);
+  }
+  if (p.yarns.empty()) fail(L, "yarns is empty; declare one, e.g. yarns = { A = { diameter = 1.0 } }");
+  lua_pop(L, 1);
+}
+
+void read_gauge(lua_State* L, int index, Pattern& p) {
+  lua_getfield(L, index, "gauge");
+  if (!lua_istable(L, -1))
+    fail(L, "pattern{} needs a gauge, e.g. gauge = { stitches = 22, rows = 30 } (per 10 cm)");
+  const int g = lua_gettop(L);
+  only_known_keys(L, g, "gauge", {"stitches", "rows", "loop_width", "loop_height", "thickness"});
+  const auto stitches = number_field(L, g, "gauge", "stitches");
+  const auto rows = number_field(L, g, "gauge", "rows");
+  const auto width = number_field(L, g, "gauge", "loop_width");
+  const auto height = number_field(L, g, "gauge", "loop_height");
+  const auto thickness = number_field(L, g, "gauge", "thickness");
+  const bool per_10cm = stitches || rows, in_mm = width || height;
+  if (per_10cm && in_mm) fail(L, "gauge mixes stitches/rows with loop_width/loop_height; give one pair or the other");
+  if (per_10cm) {
+    if (!stitches || !rows) fail(L, "gauge needs both stitches and rows (per 10 cm)");
+    p.gauge.loop_width = 100.0 / in_range(L, *stitches, "gauge.stitches", 0.0, 200.0, " per 10 cm");
+    const double spacing = 100.0 / in_range(L, *rows, "gauge.rows", 0.0, 300.0, " per 10 cm");
+    p.gauge.loop_height = spacing / Gauge::course_spacing_ratio;
+  } else if (in_mm) {
+    if (!width || !height) fail(L, "gauge needs both loop_width and loop_height (mm)");
+    p.gauge.loop_width = in_range(L, *width, "gauge.loop_width", 0.0, 100.0, " mm");
+    p.gauge.loop_height = in_range(L, *height, "gauge.loop_height", 0.0, 100.0, " mm");
+  } else {
+    fail(L, "gauge is empty; give stitches and rows per 10 cm, or loop_width and loop_height in mm");
+  }
+  double thickest = 0.0;
+  std::string thickest_id;
+  for (const Yarn& y : p.yarns) {
+    if (y.diameter > thickest) thickest = y.diameter, thickest_id = y.id;
+  }
+  // Without a thickness the fabric is two yarns deep, as in the seed paper's examples.
+  p.gauge.thickness = thickness ? in_range(L, *thickness, "gauge.thickness", 0.0, 100.0, " mm") : 2.0 * thickest;
+  // A loop's width holds its two legs side by side: a yarn over half of it cannot fit.
+  const double W = p.gauge.loop_width;
+  if (thickest > 0.5 * W)
+    fail(L, "yarn " + thickest_id + " is " + show(thickest) + " mm thick but a loop is only " + show(W) +
+                " mm wide; a loop holds a yarn of at most " + show(0.5 * W) + " mm: use a thinner yarn or fewer stitches per 10 cm");
+  if (p.gauge.thickness < thickest)
+    fail(L, "gauge.thickness is " + show(p.gauge.thickness) + " mm, thinner than yarn " + thickest_id + " (" + show(thickest) +
+                " mm); the fabric is at least one yarn thick");
+  lua_pop(L, 1);
+}
+
+}  // namespace
+
+std::string yarn_weight_markdown() {
+  std::string out = "| weight | also | wraps per inch | diameter (mm) |\n|---|---|---|---|\n";
+  for (const Weight& w : weights) {
+    std::string a = w.aliases;
+    std::replace(a.begin(), a.end(), '|', ',');
+    char d[32];
+    std::snprintf(d, sizeof d, "%.2f", wpi_flattening * 25.4 / w.wpi);
+    out += "| " + std::string(w.name) + " | " + a + " | " + show(w.wpi) + " | " + d + " |\n";
+  }
+  return out;
+}
+
+int pattern_verb(lua_State* L) {
+  Script& s = script_of(L);
+  if (s.declared)
+    fail(L, "pattern{} was already given at line " + std::to_string(s.declared_line) + "; give it once");
+  if (lua_type(L, 1) != LUA_TTABLE)
+    fail(L, std::string("pattern takes a table: pattern { name = ..., gauge = ..., yarns = ... }, not a ") + luaL_typename(L, 1));
+  only_known_keys(L, 1, "pattern{}", {"name", "gauge", "yarns", "knitting", "seed"});
+  Pattern& p = s.pattern;
+  p.name = string_field(L, 1, "pattern{}", "name").value_or("untitled");
+  read_yarns(L, 1, p);  // before the gauge: its default thickness follows the yarn
+  read_gauge(L, 1, p);
+  for (const Yarn& y : p.yarns) s.yarn_ids.push_back(y.id);
+  const std::string knitting = string_field(L, 1, "pattern{}", "knitting").value_or("round");
+  if (knitting == "flat") p.knitting = Knitting::flat;
+  else if (knitting != "round") fail(L, "knitting is \"" + knitting + "\"; use \"round\" or \"flat\"");
+  lua_getfield(L, 1, "seed");
+  if (!lua_isnil(L, -1)) {
+    const long long seed = whole_number(L, lua_gettop(L), "pattern{}.seed", -(1LL << 53), 1LL << 53);
+    if (!s.options.seed) {  // --seed wins over the script's
+      lua_getglobal(L, "math");
+      lua_getfield(L, -1, "randomseed");
+      lua_pushinteger(L, seed);
+      lua_call(L, 1, 0);
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+  s.declared = true;
+  s.declared_line = caller_line(L);
+  return 0;
+}
+
+}  // namespace knitc::runtime

@@ -1,0 +1,376 @@
+#include "language/written.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+
+namespace knitc::language {
+
+namespace {
+
+constexpr int max_count = 100'000;
+
+enum class Kind { word, star, comma, semicolon, open, close, end };
+
+struct Token {
+  Kind kind;
+  std::string_view text;
+  char bracket = 0;  // '(' or '[' for open and close
+};
+
+std::vector<Token> tokenize(std::string_view s) {
+  std::vector<Token> out;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const char c = s[i];
+    if (std::isspace(static_cast<unsigned char>(c))) { ++i; continue; }
+    switch (c) {
+      case '*': out.push_back({Kind::star, s.substr(i, 1)}); ++i; continue;
+      case ',': out.push_back({Kind::comma, s.substr(i, 1)}); ++i; continue;
+      case ';': out.push_back({Kind::semicolon, s.substr(i, 1)}); ++i; continue;
+      case '(': case '[': out.push_back({Kind::open, s.substr(i, 1), c}); ++i; continue;
+      case ')': case ']': out.push_back({Kind::close, s.substr(i, 1), c == ')' ? '(' : '['}); ++i; continue;
+      default: break;
+    }
+    const std::size_t start = i;
+    while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i])) && std::string_view("*,;()[]").find(s[i]) == std::string_view::npos) ++i;
+    out.push_back({Kind::word, s.substr(start, i - start)});
+  }
+  // A sentence's full stop at the very end is the knitter's, not a stitch.
+  if (!out.empty() && out.back().kind == Kind::word && out.back().text.back() == '.') {
+    out.back().text.remove_suffix(1);
+    if (out.back().text.empty()) out.pop_back();
+  }
+  out.push_back({Kind::end, {}});
+  return out;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
+  return out;
+}
+
+std::optional<int> whole(std::string_view s) {
+  int v = 0;
+  if (s.empty() || s.size() > 6) return std::nullopt;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+std::string join(std::span<const std::string_view> words) {
+  std::string out;
+  for (const auto& w : words) out += (out.empty() ? "" : " ") + std::string(w);
+  return out;
+}
+
+class Parser {
+ public:
+  Parser(std::string_view text, std::span<const std::string> yarns) : text_(text), tokens_(tokenize(text)), yarns_(yarns) {}
+
+  std::variant<RowText, TextError> row() {
+    RowText r;
+    r.before = sequence();
+    if (peek().kind == Kind::star) {
+      next();
+      r.star = sequence();
+      if (peek().kind == Kind::star) next();  // "*k2, p2*; rep from *"
+      if (peek().kind != Kind::semicolon) return fail("a *repeat needs \"; rep from *\" after it");
+      next();
+      if (!repeat_clause(r)) return *error_;
+      if (peek().kind == Kind::comma) {
+        next();
+        r.after = sequence();
+      }
+    }
+    if (error_) return *error_;
+    if (peek().kind == Kind::close) return fail(std::string("'") + std::string(peek().text) + "' without a matching opening bracket");
+    if (peek().kind == Kind::star) return fail("a row can have one *repeat only");
+    if (peek().kind != Kind::end) return fail("unexpected '" + std::string(peek().text) + "'");
+    if (r.before.empty() && !r.star && r.after.empty()) return fail("no stitches; give stitches such as \"k\"");
+    if (r.star && r.star->empty()) return fail("the *repeat has no stitches");
+    return r;
+  }
+
+ private:
+  const Token& peek() const { return tokens_[pos_]; }
+  const Token& next() { return tokens_[pos_++]; }
+  TextError fail(std::string message) {
+    if (!error_) error_ = TextError{std::move(message)};
+    return *error_;
+  }
+
+  // "rep from *" [to end | across | to last N st(s)]
+  bool repeat_clause(RowText& r) {
+    std::vector<std::string> words;
+    while (peek().kind == Kind::word) words.push_back(lower(next().text));
+    if (words.size() < 2 || words[0] != "rep" || words[1] != "from" || peek().kind != Kind::star) {
+      fail("after \";\" write \"rep from *\"");
+      return false;
+    }
+    next();
+    words.clear();
+    while (peek().kind == Kind::word) words.push_back(lower(next().text));
+    if (words.empty() || (words.size() == 2 && words[0] == "to" && words[1] == "end") ||
+        (words.size() == 1 && words[0] == "across")) {
+      return true;
+    }
+    if (words.size() == 4 && words[0] == "to" && words[1] == "last" && whole(words[2]) &&
+        (words[3] == "st" || words[3] == "sts" || words[3] == "stitch" || words[3] == "stitches")) {
+      r.to_last = *whole(words[2]);
+      return true;
+    }
+    fail("\"rep from * " + join(std::vector<std::string_view>(words.begin(), words.end())) +
+         "\" is not understood; write \"rep from *\", \"rep from * to end\" or \"rep from * to last N sts, ...\"");
+    return false;
+  }
+
+  Sequence sequence() {
+    Sequence seq;
+    while (!error_) {
+      const Token& t = peek();
+      if (t.kind == Kind::comma) { next(); continue; }
+      if (t.kind == Kind::open) {
+        next();
+        Element group;
+        group.is_group = true;
+        group.body = sequence();
+        if (error_) break;
+        if (peek().kind != Kind::close) {
+          fail(std::string("'") + t.bracket + "' is never closed");
+          break;
+        }
+        if (peek().bracket != t.bracket) {
+          fail(std::string("'") + t.bracket + "' is closed by '" + std::string(peek().text) + "'");
+          break;
+        }
+        next();
+        if (group.body.empty()) {
+          fail("an empty group \"()\"");
+          break;
+        }
+        group.count = group_count();
+        if (group.count > 0) seq.push_back(std::move(group));
+        continue;
+      }
+      if (t.kind != Kind::word) break;
+      std::vector<std::string_view> words;
+      while (peek().kind == Kind::word) words.push_back(next().text);
+      if (!item(words, seq)) break;
+    }
+    return seq;
+  }
+
+  // After a group: "x6", "x 6", "6x", "6 times", "twice", "once", or nothing (once).
+  int group_count() {
+    std::vector<std::string> words;
+    std::size_t save = pos_;
+    while (peek().kind == Kind::word) words.push_back(lower(next().text));
+    std::optional<int> n;
+    if (words.empty()) return 1;
+    if (words.size() == 1 && words[0].size() > 1 && words[0][0] == 'x') n = whole(std::string_view(words[0]).substr(1));
+    else if (words.size() == 1 && words[0].size() > 1 && words[0].back() == 'x') n = whole(std::string_view(words[0]).substr(0, words[0].size() - 1));
+    else if (words.size() == 2 && words[0] == "x") n = whole(words[1]);
+    else if (words.size() == 2 && (words[1] == "times" || words[1] == "time")) n = whole(words[0]);
+    else if (words.size() == 1 && words[0] == "twice") n = 2;
+    else if (words.size() == 1 && words[0] == "once") n = 1;
+    if (!n) {
+      pos_ = save;
+      fail("\"" + join(std::vector<std::string_view>(words.begin(), words.end())) +
+           "\" after a group is not a repeat count; write x6 or 6 times");
+      return 0;
+    }
+    if (*n < 1 || *n > max_count) {
+      fail("a group repeated " + std::to_string(*n) + " times; the count must be from 1 to 100000");
+      return 0;
+    }
+    return *n;
+  }
+
+  // One stitch: a name from the table, perhaps with a count on its first word
+  // ("k2", "sl1 wyif"), perhaps followed by a declared yarn id ("k2 B").
+  bool item(std::span<const std::string_view> words, Sequence& seq) {
+    const std::string written = join(words);
+    std::optional<int> yarn;
+    if (words.size() > 1) {
+      const auto it = std::find(yarns_.begin(), yarns_.end(), words.back());
+      if (it != yarns_.end()) {
+        yarn = static_cast<int>(it - yarns_.begin());
+        words = words.first(words.size() - 1);
+      }
+    }
+    // The whole text as a name first ("k2tog", "sl1-k2tog-psso", "no stitch").
+    std::optional<StitchId> id = find_stitch(join(words));
+    int count = 1;
+    bool explicit_count = false;
+    if (!id) {
+      std::string_view first = words[0];
+      std::size_t digits = first.size();
+      while (digits > 0 && std::isdigit(static_cast<unsigned char>(first[digits - 1]))) --digits;
+      if (digits < first.size() && digits > 0) {
+        std::vector<std::string_view> rest(words.begin(), words.end());
+        rest[0] = first.substr(0, digits);
+        id = find_stitch(join(rest));
+        if (id) {
+          const auto n = whole(first.substr(digits));
+          if (!n || *n < 1 || *n > max_count) {
+            fail("the count in '" + written + "' must be from 1 to 100000");
+            return false;
+          }
+          count = *n;
+          explicit_count = true;
+        }
+      }
+    }
+    if (!id) {
+      fail("unknown stitch '" + written + "'; did you mean " + nearest_stitch_name(written) + "?");
+      return false;
+    }
+    if (explicit_count && !stitch(*id).counted) {
+      fail(std::string(stitch(*id).name) + " takes no count ('" + written + "'); repeat it with commas or a group");
+      return false;
+    }
+    Element e;
+    e.stitch = {*id, yarn.value_or(-1)};
+    e.count = count;
+    seq.push_back(e);
+    return true;
+  }
+
+  std::string_view text_;
+  std::vector<Token> tokens_;
+  std::span<const std::string> yarns_;
+  std::size_t pos_ = 0;
+  std::optional<TextError> error_;
+};
+
+void flatten(const Sequence& seq, std::vector<Worked>& out, std::size_t limit) {
+  for (const Element& e : seq) {
+    for (int i = 0; i < e.count && out.size() <= limit; ++i) {
+      if (e.is_group) flatten(e.body, out, limit);
+      else out.push_back(e.stitch);
+    }
+  }
+}
+
+std::string stitches(int n) { return std::to_string(n) + (n == 1 ? " stitch" : " stitches"); }
+
+std::string over_or_short(int left) {
+  return left > 0 ? std::to_string(left) + " left over" : std::to_string(-left) + " missing";
+}
+
+}  // namespace
+
+std::variant<RowText, TextError> parse_row(std::string_view text, std::span<const std::string> yarn_ids) {
+  return Parser(text, yarn_ids).row();
+}
+
+int consumed(std::span<const Worked> worked) {
+  int n = 0;
+  for (const Worked& w : worked) n += stitch(w.stitch).consumes;
+  return n;
+}
+
+namespace {
+
+// When a row runs out of stitches partway through a stitch that works several (a
+// decrease or a cable at the edge), the message names that stitch.
+std::optional<std::string> edge_shortfall(std::span<const Worked> worked, int live) {
+  int used = 0;
+  for (const Worked& w : worked) {
+    const StitchDef& s = stitch(w.stitch);
+    if (used + s.consumes > live) {
+      const int left = live - used;
+      if (s.consumes < 2 || left <= 0) return std::nullopt;
+      if (s.family == StitchFamily::cable && used == 0)
+        return std::string(s.name) + " needs " + stitches(s.consumes) + " but only " + std::to_string(live) +
+               " are live; a cable cannot be wider than the fabric";
+      return std::string(s.name) + " at the edge has no neighbour to work with: it needs " + stitches(s.consumes) +
+             " but " + (left == 1 ? "1 is" : std::to_string(left) + " are") + " left; move it in from the edge";
+    }
+    used += s.consumes;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::string_view source, int live, int row) {
+  // A row can never need more stitches than the limit of live ones; stop flattening there.
+  const std::size_t limit = static_cast<std::size_t>(max_count) * 3;
+  std::vector<Worked> before, star, after;
+  flatten(text.before, before, limit);
+  if (text.star) flatten(*text.star, star, limit);
+  flatten(text.after, after, limit);
+  const std::string name = "row " + std::to_string(row) + " \"" + std::string(source) + "\"";
+  if (before.size() > limit || star.size() > limit || after.size() > limit)
+    return TextError{name + " is longer than any row can be"};
+
+  if (!text.star) {
+    const int unit = consumed(before);
+    if (unit == 0) {
+      if (live == 0) return before;
+      return TextError{name + " works none of the " + std::to_string(live) + " live stitches; give stitches such as \"k\""};
+    }
+    if (unit > live) {
+      if (auto edge = edge_shortfall(before, live)) return TextError{name + ": " + *edge};
+      return TextError{name + " uses " + stitches(unit) + " but " + std::to_string(live) + " are live (" +
+                       over_or_short(live - unit) + "); remove " + stitches(unit - live) + " or change the repeat"};
+    }
+    if (live % unit != 0)
+      return TextError{name + " repeats every " + stitches(unit) + " and does not fit " + std::to_string(live) +
+                       " live stitches (" + over_or_short(live % unit) + "); make the count a multiple of " +
+                       std::to_string(unit) + " or end the row with fixed stitches (*...; rep from * to last " +
+                       std::to_string(live % unit) + " sts, ...)"};
+    std::vector<Worked> out;
+    out.reserve(before.size() * (live / unit));
+    for (int i = 0; i < live / unit; ++i) out.insert(out.end(), before.begin(), before.end());
+    return out;
+  }
+
+  const int a = consumed(before), b = consumed(star), s = consumed(after);
+  if (text.to_last && *text.to_last != s)
+    return TextError{name + " repeats to the last " + stitches(*text.to_last) + " but " + stitches(s) +
+                     " follow the repeat; make the two agree"};
+  if (b == 0) return TextError{name + ": the *repeat works no stitches"};
+  const int room = live - a - s;
+  if (room < b) {
+    std::vector<Worked> once(before);
+    once.insert(once.end(), star.begin(), star.end());
+    once.insert(once.end(), after.begin(), after.end());
+    if (auto edge = edge_shortfall(once, live)) return TextError{name + ": " + *edge};
+    return TextError{name + " needs at least " + stitches(a + b + s) + " for one repeat but " + std::to_string(live) +
+                     " are live (" + over_or_short(room - b) + "); add stitches or shorten the repeat"};
+  }
+  if (room % b != 0)
+    return TextError{name + ": the *repeat of " + stitches(b) + " does not fit the " + std::to_string(room) +
+                     " stitches between the fixed ones (" + over_or_short(room % b) +
+                     "); change the repeat or the fixed stitches"};
+  std::vector<Worked> out(before);
+  for (int i = 0; i < room / b; ++i) out.insert(out.end(), star.begin(), star.end());
+  out.insert(out.end(), after.begin(), after.end());
+  return out;
+}
+
+std::variant<std::vector<Op>, TextError> face_view(std::span<const Worked> worked, Side side, int yarn) {
+  std::vector<Op> ops;
+  ops.reserve(worked.size());
+  for (const Worked& w : worked) {
+    Op op{w.stitch, w.yarn < 0 ? yarn : w.yarn};
+    if (side == Side::wrong) {
+      const auto face = wrong_side_face(w.stitch);
+      if (!face)
+        return TextError{std::string(stitch(w.stitch).name) +
+                         " has no wrong-side form; work it on a right-side row"};
+      op.stitch = *face;
+    }
+    ops.push_back(op);
+  }
+  // Right-side rows are worked from the right edge: the first stitch worked is the last
+  // in face order.
+  if (side == Side::right) std::reverse(ops.begin(), ops.end());
+  return ops;
+}
+
+}  // namespace knitc::language

@@ -1,0 +1,69 @@
+// Written instructions: the text of one row as a knitter writes it, parsed and then
+// worked across the live stitches. Pure C++ (no Lua), so it can be fuzzed alone.
+//
+//   k2, p2                                   repeats across the row until the stitches are used
+//   *k2, p2; rep from *                      the same, said explicitly ("to end", "across")
+//   k1, *p1, k1; rep from *                  fixed stitches before the repeat
+//   *k2, p2; rep from * to last 2 sts, k2    and after it
+//   (k2, p2) x6   [k2, p2] 6 times   (k1, p1) twice
+//   sl1 wyif, k2tog, C4F, yo2, k2 B          names from the stitch table, counts, a yarn id
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "pattern.hpp"
+
+namespace knitc::language {
+
+// A problem in a text, without its location (the caller knows the file and line).
+struct TextError {
+  std::string message;
+};
+
+// One stitch in working order, with the yarn it is worked in (-1: the current yarn).
+struct Worked {
+  StitchId stitch = 0;
+  int yarn = -1;
+  bool operator==(const Worked&) const = default;
+};
+
+struct Element;
+using Sequence = std::vector<Element>;
+
+struct Element {
+  Worked stitch;          // when body is empty
+  int count = 1;          // times the stitch, or the group, is worked
+  Sequence body;          // a bracketed group
+  bool is_group = false;
+};
+
+struct RowText {
+  Sequence before;              // everything, when there is no *repeat
+  std::optional<Sequence> star; // *...; rep from *
+  std::optional<int> to_last;   // "to last N sts"
+  Sequence after;               // what follows "rep from * ..."
+};
+
+// Parses a row's text. `yarn_ids` are the declared yarns a stitch may name after it
+// ("k2 B"); their index is the Worked::yarn of such a stitch.
+std::variant<RowText, TextError> parse_row(std::string_view text, std::span<const std::string> yarn_ids);
+
+// Works a parsed row across `live` stitches, in working order: a text without a repeat
+// is repeated until the stitches are used; a *repeat fills what the fixed stitches leave.
+// `row` is the row's number, for messages.
+std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::string_view source, int live, int row);
+
+// Live stitches worked by a sequence of stitches.
+int consumed(std::span<const Worked> stitches);
+
+// The stitches of one row worked on `side`, in working order, as face-view ops left to
+// right: right-side rows are worked right to left, so their order reverses; wrong-side
+// stitches show their face (k as p). `yarn` replaces Worked::yarn == -1.
+std::variant<std::vector<Op>, TextError> face_view(std::span<const Worked> worked, Side side, int yarn);
+
+}  // namespace knitc::language

@@ -1,0 +1,78 @@
+// The state a running pattern script builds, and the helpers its bindings share.
+// Internal to the runtime.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "language/chart.hpp"
+#include "language/written.hpp"
+#include "runtime.hpp"
+#include "sandbox.hpp"
+
+namespace knitc::runtime {
+
+struct Script {
+  RunOptions options;
+  std::string directory;  // the pattern file's folder, for its lib/
+  Pattern pattern;
+  std::vector<std::string> yarn_ids;  // pattern.yarns' ids, in order
+  bool declared = false;
+  int declared_line = 0;
+  int cast_on_line = 0;
+  int bind_off_line = 0;
+  int live = 0;           // live stitches on the needle
+  int current_yarn = 0;
+  long long loops = 0;
+  language::Legend legend = language::default_legend();
+  std::vector<std::string> warnings;
+};
+
+Script& script_of(lua_State* L);
+
+// Raises a Lua error "file:line: message" at the script line that called the binding
+// (noting the pattern file's line too when that line is in a module).
+[[noreturn]] void fail(lua_State* L, const std::string& message);
+[[noreturn]] void fail_at(lua_State* L, const SourceLocation& at, const std::string& message);
+// The script line that called the running binding, and its chunk.
+SourceLocation caller_location(lua_State* L);
+int caller_line(lua_State* L);
+std::string show(double v);
+
+std::optional<double> number_field(lua_State* L, int index, const std::string& table, const char* key);
+std::optional<std::string> string_field(lua_State* L, int index, const std::string& table, const char* key);
+// The keys of the table at index, sorted; all must be strings.
+std::vector<std::string> sorted_keys(lua_State* L, int index, const std::string& table);
+void only_known_keys(lua_State* L, int index, const std::string& table, std::initializer_list<const char*> known);
+long long whole_number(lua_State* L, int arg, const std::string& what, long long lo, long long hi);
+// The index of a declared yarn, or a located error naming the declared ones.
+int yarn_index(lua_State* L, const std::string& id);
+
+// pattern { ... }: name, gauge, yarns, knitting, seed.
+int pattern_verb(lua_State* L);
+// require "name": modules from the search folders.
+int require_verb(lua_State* L);
+// The yarn weight table of the reference docs.
+std::string yarn_weight_markdown();
+// Makes the registry table require caches modules in.
+void open_modules(lua_State* L);
+// The first line of the long string that starts at or after `line` in the chunk
+// `source` (a chart's first row), or `line` if it cannot be found.
+int long_string_first_line(const std::string& source, int line);
+// The other verbs, declared in verbs.cpp.
+struct Verb {
+  const char* name;
+  lua_CFunction function;
+  const char* usage;     // how it is called
+  const char* summary;   // what it does
+  const char* example;   // a line of Lua
+};
+std::span<const Verb> verb_table();
+
+// Limits of a fabric.
+inline constexpr long long max_stitches = 100'000;  // per course
+inline constexpr long long max_loops = 20'000'000;  // in the whole fabric
+
+}  // namespace knitc::runtime

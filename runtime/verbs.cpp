@@ -1,0 +1,332 @@
+// The pattern verbs after pattern{}: each binding checks its arguments and adds courses.
+// The verb table at the end declares them for the bindings and the reference docs.
+#include <algorithm>
+
+#include "script.hpp"
+
+namespace knitc::runtime {
+
+namespace {
+
+void need_pattern(lua_State* L, const char* verb) {
+  if (!script_of(L).declared) fail(L, std::string(verb) + " comes before pattern{}; declare the pattern first");
+}
+
+// The next row's number and the side it is worked from.
+int next_row(const Script& s) { return static_cast<int>(s.pattern.courses.size()) + 1; }
+Side side_of(const Script& s, int row) {
+  return s.pattern.knitting == Knitting::flat && row % 2 == 0 ? Side::wrong : Side::right;
+}
+
+void need_live(lua_State* L, const Script& s) {
+  if (s.live > 0) return;
+  if (s.bind_off_line != 0) fail(L, "no live stitches: all were bound off at line " + std::to_string(s.bind_off_line));
+  if (s.cast_on_line == 0) fail(L, "no live stitches; call cast_on(n) first");
+  fail(L, "no live stitches are left; the rows before decreased them all");
+}
+
+// Adds a course in face view, then checks what it leaves on the needle.
+void add_course(lua_State* L, std::vector<Op> ops, const SourceLocation& where) {
+  Script& s = script_of(L);
+  Course c;
+  c.ops = std::move(ops);
+  c.side = side_of(s, next_row(s));
+  c.where = where;
+  const int live = produced(c);
+  if (live > max_stitches)
+    fail(L, "row " + std::to_string(next_row(s)) + " leaves " + std::to_string(live) + " stitches; at most " +
+                std::to_string(max_stitches) + " fit on a needle");
+  s.loops += live;
+  if (s.loops > max_loops)
+    fail(L, "the fabric would have more than " + std::to_string(max_loops) + " loops; knit a smaller piece");
+  s.live = live;
+  s.pattern.courses.push_back(std::move(c));
+}
+
+// Works written text (already parsed) as the next row.
+void work_written(lua_State* L, const language::RowText& text, const std::string& source, const SourceLocation& line) {
+  Script& s = script_of(L);
+  need_live(L, s);
+  const int row = next_row(s);
+  auto worked = language::work_row(text, source, s.live, row);
+  if (auto* e = std::get_if<language::TextError>(&worked)) fail(L, e->message);
+  auto ops = language::face_view(std::get<std::vector<language::Worked>>(worked), side_of(s, row), s.current_yarn);
+  if (auto* e = std::get_if<language::TextError>(&ops))
+    fail(L, "row " + std::to_string(row) + " \"" + source + "\" is a wrong-side row: " + e->message);
+  add_course(L, std::move(std::get<std::vector<Op>>(ops)), line);
+}
+
+language::RowText parse_written(lua_State* L, const std::string& text) {
+  auto parsed = language::parse_row(text, script_of(L).yarn_ids);
+  if (auto* e = std::get_if<language::TextError>(&parsed))
+    fail(L, "row " + std::to_string(next_row(script_of(L))) + " \"" + text + "\": " + e->message);
+  return std::get<language::RowText>(std::move(parsed));
+}
+
+int cast_on_verb(lua_State* L) {
+  need_pattern(L, "cast_on");
+  Script& s = script_of(L);
+  if (s.cast_on_line != 0) fail(L, "cast_on was already called at line " + std::to_string(s.cast_on_line));
+  s.live = static_cast<int>(whole_number(L, 1, "cast_on's stitch count", 1, max_stitches));
+  if (!lua_isnoneornil(L, 2)) s.current_yarn = yarn_index(L, luaL_checkstring(L, 2));
+  s.pattern.cast_on = s.live;
+  s.pattern.cast_on_yarn = s.current_yarn;
+  s.cast_on_line = caller_line(L);
+  return 0;
+}
+
+std::string text_argument(lua_State* L, int arg, const char* verb) {
+  if (lua_type(L, arg) != LUA_TSTRING)
+    fail(L, std::string(verb) + " takes the row's written instructions as a string, e.g. " + verb + "(\"k2, p2\"), not a " +
+                luaL_typename(L, arg));
+  return lua_tostring(L, arg);
+}
+
+int row_verb(lua_State* L) {
+  need_pattern(L, "row");
+  const std::string text = text_argument(L, 1, "row");
+  work_written(L, parse_written(L, text), text, caller_location(L));
+  return 0;
+}
+
+int rows_verb(lua_State* L) {
+  need_pattern(L, "rows");
+  const long long count = whole_number(L, 1, "rows' count", 1, max_stitches);
+  const std::string text = text_argument(L, 2, "rows");
+  const auto parsed = parse_written(L, text);
+  const SourceLocation line = caller_location(L);
+  for (long long i = 0; i < count; ++i) work_written(L, parsed, text, line);
+  return 0;
+}
+
+// course { k, k, p, p, rep = 6, yarn = "B" }: stitches in working order, as written
+// instructions would list them; a table item { "k", yarn = "B" } works one in another yarn.
+int course_verb(lua_State* L) {
+  need_pattern(L, "course");
+  Script& s = script_of(L);
+  if (lua_type(L, 1) != LUA_TTABLE) fail(L, std::string("course takes a table, e.g. course { k, p, rep = 6 }, not a ") + luaL_typename(L, 1));
+  for (const std::string& key : [&] {
+         std::vector<std::string> named;
+         lua_pushnil(L);
+         while (lua_next(L, 1) != 0) {
+           lua_pop(L, 1);
+           if (lua_type(L, -1) == LUA_TSTRING) named.emplace_back(lua_tostring(L, -1));
+         }
+         std::sort(named.begin(), named.end());
+         return named;
+       }()) {
+    if (key != "rep" && key != "yarn") fail(L, "unknown field '" + key + "' in course{}; known fields: rep, yarn");
+  }
+  const lua_Integer n = luaL_len(L, 1);
+  if (n == 0) fail(L, "course{} lists no stitches; give some, e.g. course { k, p }");
+  std::string text;
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_geti(L, 1, i);
+    std::string item;
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      item = lua_tostring(L, -1);
+    } else if (lua_type(L, -1) == LUA_TTABLE) {
+      lua_geti(L, -1, 1);
+      if (lua_type(L, -1) != LUA_TSTRING) fail(L, "course{} item " + std::to_string(i) + " must name its stitch first, e.g. { k, yarn = \"B\" }");
+      item = lua_tostring(L, -1);
+      lua_pop(L, 1);
+      const auto yarn = string_field(L, lua_gettop(L), "course{} item " + std::to_string(i), "yarn");
+      if (yarn) {
+        yarn_index(L, *yarn);
+        item += " " + *yarn;
+      }
+    } else {
+      fail(L, "course{} item " + std::to_string(i) + " is a " + luaL_typename(L, -1) +
+                  "; give stitches such as k, p, k2tog or \"sl1 wyif\"");
+    }
+    if (item.find_first_of(",;*()[]") != std::string::npos)
+      fail(L, "course{} item " + std::to_string(i) + " is \"" + item + "\"; give one stitch per item");
+    text += (text.empty() ? "" : ", ") + item;
+    lua_pop(L, 1);
+  }
+  lua_getfield(L, 1, "rep");
+  if (!lua_isnil(L, -1)) text = "(" + text + ") x" + std::to_string(whole_number(L, lua_gettop(L), "course{}.rep", 1, max_stitches));
+  lua_pop(L, 1);
+  const int saved_yarn = s.current_yarn;
+  if (const auto yarn = string_field(L, 1, "course{}", "yarn")) s.current_yarn = yarn_index(L, *yarn);
+  work_written(L, parse_written(L, text), text, caller_location(L));
+  s.current_yarn = saved_yarn;
+  return 0;
+}
+
+// Reads a legend table { ["#"] = "k", ["*"] = { "p", yarn = "B" } } into the legend.
+void read_legend(lua_State* L, int index, language::Legend& legend, const std::string& where) {
+  for (const std::string& symbol : sorted_keys(L, index, where)) {
+    lua_getfield(L, index, symbol.c_str());
+    std::string name;
+    int yarn = -1;
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      name = lua_tostring(L, -1);
+    } else if (lua_type(L, -1) == LUA_TTABLE) {
+      lua_geti(L, -1, 1);
+      if (lua_type(L, -1) != LUA_TSTRING) fail(L, where + "[\"" + symbol + "\"] must name its stitch first, e.g. { \"k\", yarn = \"B\" }");
+      name = lua_tostring(L, -1);
+      lua_pop(L, 1);
+      if (const auto y = string_field(L, lua_gettop(L), where + "[\"" + symbol + "\"]", "yarn")) yarn = yarn_index(L, *y);
+    } else {
+      fail(L, where + "[\"" + symbol + "\"] must be a stitch name, not a " + luaL_typename(L, -1));
+    }
+    const auto id = find_stitch(name);
+    if (!id) fail(L, where + "[\"" + symbol + "\"] is '" + name + "', an unknown stitch; did you mean " + nearest_stitch_name(name) + "?");
+    if (!legend.set(symbol, {*id, yarn})) fail(L, where + " symbol \"" + symbol + "\" must be one or more characters without spaces");
+    lua_pop(L, 1);
+  }
+}
+
+int legend_verb(lua_State* L) {
+  need_pattern(L, "legend");
+  if (lua_type(L, 1) != LUA_TTABLE) fail(L, "legend takes a table, e.g. legend { [\"#\"] = { \"k\", yarn = \"B\" } }");
+  read_legend(L, 1, script_of(L).legend, "legend");
+  return 0;
+}
+
+// chart [[ ... ]] or chart { [[ ... ]], legend = {...}, rep = 2 }
+int chart_verb(lua_State* L) {
+  need_pattern(L, "chart");
+  Script& s = script_of(L);
+  language::Legend legend = s.legend;
+  std::string text;
+  long long repeats = 1;
+  if (lua_type(L, 1) == LUA_TSTRING) {
+    text = lua_tostring(L, 1);
+  } else if (lua_type(L, 1) == LUA_TTABLE) {
+    for (const std::string& key : [&] {
+           std::vector<std::string> named;
+           lua_pushnil(L);
+           while (lua_next(L, 1) != 0) {
+             lua_pop(L, 1);
+             if (lua_type(L, -1) == LUA_TSTRING) named.emplace_back(lua_tostring(L, -1));
+           }
+           std::sort(named.begin(), named.end());
+           return named;
+         }()) {
+      if (key != "rep" && key != "legend") fail(L, "unknown field '" + key + "' in chart{}; known fields: legend, rep");
+    }
+    lua_geti(L, 1, 1);
+    if (lua_type(L, -1) != LUA_TSTRING) fail(L, "chart{} needs the chart text first: chart { [[ ... ]], rep = 2 }");
+    text = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    lua_getfield(L, 1, "legend");
+    if (!lua_isnil(L, -1)) {
+      if (!lua_istable(L, -1)) fail(L, "chart{}.legend must be a table of symbols");
+      read_legend(L, lua_gettop(L), legend, "chart{}.legend");
+    }
+    lua_pop(L, 1);
+    lua_getfield(L, 1, "rep");
+    if (!lua_isnil(L, -1)) repeats = whole_number(L, lua_gettop(L), "chart{}.rep", 1, max_stitches);
+    lua_pop(L, 1);
+  } else {
+    fail(L, std::string("chart takes the chart as a string, chart [[ ... ]], or a table, not a ") + luaL_typename(L, 1));
+  }
+  // The chart text's first line: where its long string starts, in the chunk that called.
+  int first_line = caller_line(L);
+  std::string chart_file = sandbox_of(L).file;
+  {
+    lua_Debug ar;
+    for (int level = 1; lua_getstack(L, level, &ar) != 0; ++level) {
+      if (lua_getinfo(L, "Sl", &ar) != 0 && ar.currentline > 0) {
+        const auto& sources = sandbox_of(L).sources;
+        const auto it = ar.source[0] == '@' ? sources.find(ar.source + 1) : sources.end();
+        if (it != sources.end()) {
+          first_line = long_string_first_line(it->second, ar.currentline);
+          chart_file = it->first;
+        }
+        break;
+      }
+    }
+  }
+  auto parsed = language::parse_chart(text, legend);
+  if (auto* e = std::get_if<language::ChartError>(&parsed)) fail_at(L, {chart_file, first_line + e->line}, e->message);
+  const auto& rows = std::get<std::vector<language::ChartRow>>(parsed);
+  if (rows.empty()) fail(L, "the chart has no rows");
+  for (long long r = 0; r < repeats; ++r) {
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const int line = first_line + rows[i].line;
+      need_live(L, s);
+      const int width = language::consumed(rows[i].cells);
+      const std::string name = "chart row " + std::to_string(i + 1) + " (row " + std::to_string(next_row(s)) + ")";
+      const SourceLocation at{chart_file, line};
+      auto located = [&](const std::string& m) { fail_at(L, at, m); };
+      if (width == 0) located(name + " works no stitches; draw a stitch in each column");
+      if (width > s.live || s.live % width != 0) {
+        const int left = width > s.live ? s.live - width : s.live % width;
+        located(name + " is " + std::to_string(width) + " stitches wide and does not repeat evenly across " +
+                std::to_string(s.live) + " live stitches (" +
+                (left > 0 ? std::to_string(left) + " left over" : std::to_string(-left) + " missing") +
+                "); make the live count a multiple of " + std::to_string(width));
+      }
+      std::vector<Op> ops;
+      ops.reserve(rows[i].cells.size() * (s.live / width));
+      // A chart is drawn as the face looks: its cells are face view already, on either side.
+      for (int k = 0; k < s.live / width; ++k) {
+        for (const auto& cell : rows[i].cells) ops.push_back({cell.stitch, cell.yarn < 0 ? s.current_yarn : cell.yarn});
+      }
+      add_course(L, std::move(ops), at);
+    }
+  }
+  return 0;
+}
+
+int yarn_verb(lua_State* L) {
+  need_pattern(L, "yarn");
+  if (lua_type(L, 1) != LUA_TSTRING) fail(L, "yarn takes a declared yarn's name, e.g. yarn \"B\"");
+  script_of(L).current_yarn = yarn_index(L, lua_tostring(L, 1));
+  return 0;
+}
+
+int bind_off_verb(lua_State* L) {
+  need_pattern(L, "bind_off");
+  Script& s = script_of(L);
+  need_live(L, s);
+  if (s.pattern.courses.empty()) fail(L, "bind_off right after cast_on leaves no fabric; knit some rows first");
+  s.pattern.bound_off = true;
+  s.live = 0;
+  s.bind_off_line = caller_line(L);
+  return 0;
+}
+
+constexpr Verb verbs[] = {
+    {"pattern", pattern_verb, "pattern { name = S, gauge = {...}, yarns = {...}, knitting = \"round\"|\"flat\", seed = N }",
+     "Declares the pattern, once, before anything else. gauge: { stitches = S, rows = R } per 10 cm, or "
+     "{ loop_width = W, loop_height = H } in mm, either with an optional thickness in mm (default two yarn diameters). "
+     "yarns: a table of named yarns, each { diameter = mm } or { weight = name }, and color = \"#rrggbb\". "
+     "knitting: \"round\" (default: every row is worked from the right side) or \"flat\" (even rows are wrong-side rows). "
+     "seed: math.random's seed (default 0; --seed overrides).",
+     "pattern { name = \"rib\", gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = \"dk\", color = \"#8a1c2b\" } } }"},
+    {"cast_on", cast_on_verb, "cast_on(n [, yarn])", "Casts on n stitches, in the given yarn or the first declared one.",
+     "cast_on(24)"},
+    {"row", row_verb, "row(text)",
+     "Works one row of written instructions. The text repeats across the row until the live stitches are used; "
+     "*...; rep from * [to end | to last N sts, ...] and (...) xN say repeats explicitly.",
+     "row \"*k2, p2; rep from * to last 2 sts, k2\""},
+    {"rows", rows_verb, "rows(n, text)", "Works n rows of the same written instructions.", "rows(6, \"k2, p2\")"},
+    {"course", course_verb, "course { stitch, ..., rep = N, yarn = id }",
+     "Works one row from a Lua list of stitches in working order (the globals k, p, yo, k2tog, ssk, cdd, sl, C4F, ... "
+     "or any written name as a string); rep repeats the list N times, else it repeats to fill the row. "
+     "An item { k, yarn = \"B\" } works that stitch in another yarn.",
+     "course { k, k, p, p, rep = 6 }"},
+    {"chart", chart_verb, "chart(text) or chart { text, legend = {...}, rep = N }",
+     "Works the rows of a chart drawn as the face looks, the last line first (row 1). Each row repeats across the live "
+     "stitches; rep repeats the whole chart upward. On wrong-side rows the knitter reads the chart from the left and "
+     "works each symbol's wrong-side form; the face looks as drawn.",
+     "chart [[\n  | | . .\n  | | . .\n]]"},
+    {"legend", legend_verb, "legend { [symbol] = stitch | { stitch, yarn = id }, ... }",
+     "Adds or changes chart symbols for the charts that follow.", "legend { [\"#\"] = { \"k\", yarn = \"B\" } }"},
+    {"yarn", yarn_verb, "yarn(id)", "Changes to another declared yarn for the rows that follow: stripes.", "yarn \"B\""},
+    {"bind_off", bind_off_verb, "bind_off()", "Binds off every live stitch; no rows may follow.", "bind_off()"},
+    {"require", require_verb, "require(name)",
+     "Loads a module of the pattern library: name.lua from the -I folders, the pattern's own lib/ folder, then "
+     "knitc's patterns/lib. Dots in the name are folders. Each module runs once; require returns what it returns.",
+     "local ribs = require \"ribs\""},
+};
+
+}  // namespace
+
+std::span<const Verb> verb_table() { return verbs; }
+
+}  // namespace knitc::runtime
