@@ -45,6 +45,7 @@ void fail_at(lua_State* L, const SourceLocation& at, const std::string& message)
 
 std::string show(double v) {
   std::ostringstream s;
+  s.precision(4);
   s << v;
   return s.str();
 }

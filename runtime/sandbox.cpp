@@ -2,6 +2,10 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
+#include <vector>
+
+#include "stitches/stitches.hpp"
 
 namespace knitc::runtime {
 
@@ -83,6 +87,32 @@ int message_handler(lua_State* L) {
   return 1;
 }
 
+// "attempt to call a nil value (global 'rows_')": the nearest global name, if one is close.
+std::string global_hint(lua_State* L, const std::string& message) {
+  const std::string marker = "(global '";
+  const auto at = message.find(marker);
+  if (at == std::string::npos || message.find("attempt to call a nil value") == std::string::npos) return "";
+  const auto end = message.find('\'', at + marker.size());
+  if (end == std::string::npos) return "";
+  const std::string name = message.substr(at + marker.size(), end - at - marker.size());
+  std::vector<std::string> names;
+  lua_pushglobaltable(L);
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    if (lua_type(L, -2) == LUA_TSTRING && lua_type(L, -1) == LUA_TFUNCTION) names.emplace_back(lua_tostring(L, -2));
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  std::sort(names.begin(), names.end());  // ties go to the first name, whatever the table order
+  std::string best;
+  int best_distance = 3;
+  for (const auto& n : names) {
+    const int d = edit_distance(name, n);
+    if (d < best_distance) best_distance = d, best = n;
+  }
+  return best.empty() ? "" : "; did you mean " + best + "?";
+}
+
 }  // namespace
 
 SandboxState& sandbox_of(lua_State* L) {
@@ -142,7 +172,8 @@ void run_chunk(lua_State* L, std::string_view source) {
                        " MiB of memory; look for a table that grows without end");
   }
   const char* message = lua_tostring(L, -1);
-  throw PatternError(message != nullptr ? message : s.file + ": unknown error");
+  if (message == nullptr) throw PatternError(s.file + ": unknown error");
+  throw PatternError(message + global_hint(L, message));
 }
 
 }  // namespace knitc::runtime

@@ -290,6 +290,22 @@ int bind_off_verb(lua_State* L) {
   return 0;
 }
 
+int live_verb(lua_State* L) {
+  lua_pushinteger(L, script_of(L).live);
+  return 1;
+}
+
+int knitting_verb(lua_State* L) {
+  need_pattern(L, "knitting");
+  lua_pushstring(L, script_of(L).pattern.knitting == Knitting::flat ? "flat" : "round");
+  return 1;
+}
+
+int row_number_verb(lua_State* L) {
+  lua_pushinteger(L, next_row(script_of(L)));
+  return 1;
+}
+
 constexpr Verb verbs[] = {
     {"pattern", pattern_verb, "pattern { name = S, gauge = {...}, yarns = {...}, knitting = \"round\"|\"flat\", seed = N }",
      "Declares the pattern, once, before anything else. gauge: { stitches = S, rows = R } per 10 cm, or "
@@ -318,6 +334,12 @@ constexpr Verb verbs[] = {
     {"legend", legend_verb, "legend { [symbol] = stitch | { stitch, yarn = id }, ... }",
      "Adds or changes chart symbols for the charts that follow.", "legend { [\"#\"] = { \"k\", yarn = \"B\" } }"},
     {"yarn", yarn_verb, "yarn(id)", "Changes to another declared yarn for the rows that follow: stripes.", "yarn \"B\""},
+    {"live", live_verb, "live()", "The number of live stitches on the needle now.", "local n = live()"},
+    {"knitting", knitting_verb, "knitting()", "\"flat\" or \"round\", as pattern{} declared: for library functions.",
+     "if knitting() == \"flat\" then rows(2, \"k\") end"},
+    {"row_number", row_number_verb, "row_number()",
+     "The number of the next row to be worked (1 for the first); in flat knitting odd rows are right-side rows.",
+     "local right_side = row_number() % 2 == 1"},
     {"bind_off", bind_off_verb, "bind_off()", "Binds off every live stitch; no rows may follow.", "bind_off()"},
     {"require", require_verb, "require(name)",
      "Loads a module of the pattern library: name.lua from the -I folders, the pattern's own lib/ folder, then "

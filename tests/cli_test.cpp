@@ -98,8 +98,8 @@ TEST(Cli, PatternProblemsExitOneAndWriteNothing) {
                                  " --centreline " + quoted(dir / "c.json"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, (dir / "bad.lua").string() +
-                       ":3: row \"k3\" uses 3 stitches per repeat, which does not come out on 10 live stitches "
-                       "(1 left over); change the repeat or the stitch count\n");
+                       ":3: row 1 \"k3\" repeats every 3 stitches and does not fit 10 live stitches (1 left over); "
+                       "make the count a multiple of 3 or end the row with fixed stitches (*...; rep from * to last 1 st, ...)\n");
   EXPECT_EQ(test::read_text(dir / "keep.glb"), "an older file");
   EXPECT_FALSE(fs::exists(dir / "c.json"));
   std::size_t files = 0;

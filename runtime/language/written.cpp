@@ -70,6 +70,17 @@ class Parser {
   Parser(std::string_view text, std::span<const std::string> yarns) : text_(text), tokens_(tokenize(text)), yarns_(yarns) {}
 
   std::variant<RowText, TextError> row() {
+    // Brackets first: an unclosed group would otherwise read as a strange stitch.
+    std::vector<char> open;
+    for (const Token& t : tokens_) {
+      if (t.kind == Kind::open) open.push_back(t.bracket);
+      if (t.kind == Kind::close) {
+        if (open.empty()) return fail(std::string("'") + std::string(t.text) + "' without a matching opening bracket");
+        if (open.back() != t.bracket) return fail(std::string("'") + open.back() + "' is closed by '" + std::string(t.text) + "'");
+        open.pop_back();
+      }
+    }
+    if (!open.empty()) return fail(std::string("'") + open.back() + "' is never closed");
     RowText r;
     r.before = sequence();
     if (peek().kind == Kind::star) {
@@ -224,6 +235,15 @@ class Parser {
       }
     }
     if (!id) {
+      // "k2 C" with C not declared: say so rather than call it an unknown stitch.
+      const std::string_view last = words.back();
+      if (!yarn && words.size() > 1 && std::isupper(static_cast<unsigned char>(last[0])) && !find_stitch(last)) {
+        std::vector<std::string_view> rest(words.begin(), words.end() - 1);
+        if (Parser(join(rest), {}).row().index() == 0) {
+          fail("yarn '" + std::string(last) + "' in '" + written + "' was never declared; declare it in pattern{ yarns = ... }");
+          return false;
+        }
+      }
       fail("unknown stitch '" + written + "'; did you mean " + nearest_stitch_name(written) + "?");
       return false;
     }
@@ -255,6 +275,7 @@ void flatten(const Sequence& seq, std::vector<Worked>& out, std::size_t limit) {
 }
 
 std::string stitches(int n) { return std::to_string(n) + (n == 1 ? " stitch" : " stitches"); }
+std::string sts(int n) { return std::to_string(n) + (n == 1 ? " st" : " sts"); }
 
 std::string over_or_short(int left) {
   return left > 0 ? std::to_string(left) + " left over" : std::to_string(-left) + " missing";
@@ -318,11 +339,14 @@ std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::
       return TextError{name + " uses " + stitches(unit) + " but " + std::to_string(live) + " are live (" +
                        over_or_short(live - unit) + "); remove " + stitches(unit - live) + " or change the repeat"};
     }
+    if (live % unit != 0 && 2 * unit > live)  // it fits once at most: a fixed row, short
+      return TextError{name + " uses " + stitches(unit) + " but " + std::to_string(live) + " are live (" +
+                       over_or_short(live - unit) + "); add " + stitches(live - unit) + " or change the repeat"};
     if (live % unit != 0)
       return TextError{name + " repeats every " + stitches(unit) + " and does not fit " + std::to_string(live) +
                        " live stitches (" + over_or_short(live % unit) + "); make the count a multiple of " +
                        std::to_string(unit) + " or end the row with fixed stitches (*...; rep from * to last " +
-                       std::to_string(live % unit) + " sts, ...)"};
+                       sts(live % unit) + ", ...)"};
     std::vector<Worked> out;
     out.reserve(before.size() * (live / unit));
     for (int i = 0; i < live / unit; ++i) out.insert(out.end(), before.begin(), before.end());

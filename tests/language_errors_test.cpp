@@ -1,0 +1,246 @@
+// The catalogue of bad scripts: each with its exact message and line. A designer reads
+// these messages daily, so their wording is tested output; none may crash, and through
+// the command line none may write an output file.
+#include <gtest/gtest.h>
+
+#include "support.hpp"
+
+namespace knitc {
+namespace {
+
+struct BadScript {
+  const char* name;
+  const char* source;
+  const char* message;  // exact; @LIB@ stands for knitc's patterns/lib
+};
+
+void PrintTo(const BadScript& script, std::ostream* os) { *os << script.name; }
+
+const BadScript catalogue[] = {
+    {"no_yarns",
+     "pattern { gauge = { stitches = 20, rows = 30 } }\ncast_on(4)\nrow \"k\"\n",
+     "t.lua:1: pattern{} needs yarns, e.g. yarns = { A = { diameter = 1.0, color = \"#d9c8a9\" } }"},
+    {"no_gauge",
+     "pattern { yarns = { A = { diameter = 1 } } }\ncast_on(4)\nrow \"k\"\n",
+     "t.lua:1: pattern{} needs a gauge, e.g. gauge = { stitches = 22, rows = 30 } (per 10 cm)"},
+    {"unknown_pattern_field",
+     "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { diameter = 1 } }, colour = 1, bogus = 2 }\n",
+     "t.lua:1: unknown field 'bogus' in pattern{}; known fields: name, gauge, yarns, knitting, seed"},
+    {"negative_gauge",
+     "pattern { gauge = { stitches = -3, rows = 30 }, yarns = { A = { diameter = 1 } } }\n",
+     "t.lua:1: gauge.stitches is -3 per 10 cm; it must be more than 0 per 10 cm and at most 200 per 10 cm"},
+    {"absurd_gauge",
+     "pattern { gauge = { stitches = 500, rows = 30 }, yarns = { A = { diameter = 1 } } }\n",
+     "t.lua:1: gauge.stitches is 500 per 10 cm; it must be more than 0 per 10 cm and at most 200 per 10 cm"},
+    {"mixed_gauge",
+     "pattern { gauge = { stitches = 20, loop_height = 3 }, yarns = { A = { diameter = 1 } } }\n",
+     "t.lua:1: gauge mixes stitches/rows with loop_width/loop_height; give one pair or the other"},
+    {"nan_rows",
+     "pattern { gauge = { stitches = 20, rows = 0/0 }, yarns = { A = { diameter = 1 } } }\n",
+     "t.lua:1: gauge.rows is NaN; it must be more than 0 per 10 cm and at most 300 per 10 cm"},
+    {"zero_diameter",
+     "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { diameter = 0 } } }\n",
+     "t.lua:1: yarns.A.diameter is 0 mm; it must be more than 0 mm and at most 30 mm"},
+    {"bad_colour",
+     "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { diameter = 1, color = \"red\" } } }\n",
+     "t.lua:1: yarns.A.color is \"red\"; give a CSS hex colour such as \"#d9c8a9\""},
+    {"unknown_weight",
+     "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { weight = \"dkk\" } } }\n",
+     "t.lua:1: yarns.A.weight is \"dkk\"; known weights: lace, super fine (fingering/sock), fine (sport), light (dk), medium (worsted/aran), bulky (chunky), super bulky, jumbo"},
+    {"diameter_and_weight",
+     "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { weight = \"dk\", diameter = 2 } } }\n",
+     "t.lua:1: yarns.A gives both diameter and weight; give one"},
+    {"yarn_too_thick",
+     "pattern { gauge = { stitches = 40, rows = 50 }, yarns = { A = { weight = \"bulky\" } } }\n",
+     "t.lua:1: yarn A is 2.879 mm thick but a loop is only 2.5 mm wide; a loop holds a yarn of at most 1.25 mm: use a thinner yarn or fewer stitches per 10 cm"},
+    {"thinner_than_yarn",
+     "pattern { gauge = { loop_width = 4, loop_height = 4.2, thickness = 0.5 }, yarns = { A = { diameter = 1 } } }\n",
+     "t.lua:1: gauge.thickness is 0.5 mm, thinner than yarn A (1 mm); the fabric is at least one yarn thick"},
+    {"yarn_named_like_stitch",
+     "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { P = { diameter = 1 } } }\n",
+     "t.lua:1: yarn name 'P' is also a stitch; name it otherwise, e.g. P1"},
+    {"unknown_knitting",
+     "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { diameter = 1 } }, knitting = \"sideways\" }\n",
+     "t.lua:1: knitting is \"sideways\"; use \"round\" or \"flat\""},
+    {"pattern_twice",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\npattern { gauge = {}, yarns = {} }\n",
+     "t.lua:2: pattern{} was already given at line 1; give it once"},
+    {"cast_on_first",
+     "cast_on(4)\n",
+     "t.lua:1: cast_on comes before pattern{}; declare the pattern first"},
+    {"no_pattern",
+     "local x = 1\n",
+     "t.lua:1: the script never calls pattern{}; start it with pattern { name = ..., gauge = ..., yarns = ... }"},
+    {"left_over",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(10)\nrows(2, \"k3\")\n",
+     "t.lua:3: row 1 \"k3\" repeats every 3 stitches and does not fit 10 live stitches (1 left over); make the count a multiple of 3 or end the row with fixed stitches (*...; rep from * to last 1 st, ...)"},
+    {"missing",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(2)\nrow \"k3\"\n",
+     "t.lua:3: row 1 \"k3\" uses 3 stitches but 2 are live (1 missing); remove 1 stitch or change the repeat"},
+    {"fixed_row_short",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(24)\nrow \"k10, p12, k1\"\n",
+     "t.lua:3: row 1 \"k10, p12, k1\" uses 23 stitches but 24 are live (1 left over); add 1 stitch or change the repeat"},
+    {"unknown_stitch",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nrow \"k, kk\"\n",
+     "t.lua:3: row 1 \"k, kk\": unknown stitch 'kk'; did you mean k?"},
+    {"unknown_cable",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(8)\nrow \"C4X, k4\"\n",
+     "t.lua:3: row 1 \"C4X, k4\": unknown stitch 'C4X'; did you mean C4F?"},
+    {"rows_before_cast_on",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\nrows(2, \"k\")\n",
+     "t.lua:2: no live stitches; call cast_on(n) first"},
+    {"cast_on_fraction",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(2.5)\n",
+     "t.lua:2: cast_on's stitch count must be a whole number, not 2.5"},
+    {"cast_on_zero",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(0)\n",
+     "t.lua:2: cast_on's stitch count is 0; it must be from 1 to 100000"},
+    {"cast_on_twice",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\ncast_on(4)\n",
+     "t.lua:3: cast_on was already called at line 2"},
+    {"empty_pattern",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\n",
+     "t.lua:2: the pattern has no courses; add some, e.g. rows(10, \"k\")"},
+    {"unclosed_group",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(8)\nrow \"(k2, p2 x2\"\n",
+     "t.lua:3: row 1 \"(k2, p2 x2\": '(' is never closed"},
+    {"mismatched_bracket",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(8)\nrow \"(k2, p2] x2\"\n",
+     "t.lua:3: row 1 \"(k2, p2] x2\": '(' is closed by ']'"},
+    {"bad_group_count",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(8)\nrow \"(k2, p2) lots\"\n",
+     "t.lua:3: row 1 \"(k2, p2) lots\": \"lots\" after a group is not a repeat count; write x6 or 6 times"},
+    {"star_without_rep",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(8)\nrow \"*k2, p2\"\n",
+     "t.lua:3: row 1 \"*k2, p2\": a *repeat needs \"; rep from *\" after it"},
+    {"rep_to_last_disagrees",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(10)\nrow \"*k2, p2; rep from * to last 2 sts, k3\"\n",
+     "t.lua:3: row 1 \"*k2, p2; rep from * to last 2 sts, k3\" repeats to the last 2 stitches but 3 stitches follow the repeat; make the two agree"},
+    {"star_does_not_fit",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(11)\nrow \"k1, *k2, p2; rep from *\"\n",
+     "t.lua:3: row 1 \"k1, *k2, p2; rep from *\": the *repeat of 4 stitches does not fit the 10 stitches between the fixed ones (2 left over); change the repeat or the fixed stitches"},
+    {"bad_rep_clause",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(8)\nrow \"*k2, p2; rep from * forever\"\n",
+     "t.lua:3: row 1 \"*k2, p2; rep from * forever\": \"rep from * forever\" is not understood; write \"rep from *\", \"rep from * to end\" or \"rep from * to last N sts, ...\""},
+    {"cable_wider_than_fabric",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nrow \"C6F\"\n",
+     "t.lua:3: row 1 \"C6F\": C6F needs 6 stitches but only 4 are live; a cable cannot be wider than the fabric"},
+    {"decrease_at_edge",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(5)\nrow \"k2tog, k2tog, k2tog\"\n",
+     "t.lua:3: row 1 \"k2tog, k2tog, k2tog\": k2tog at the edge has no neighbour to work with: it needs 2 stitches but 1 is left; move it in from the edge"},
+    {"count_on_uncounted",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nrow \"ssk2\"\n",
+     "t.lua:3: row 1 \"ssk2\": ssk takes no count ('ssk2'); repeat it with commas or a group"},
+    {"undeclared_yarn_verb",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nyarn \"C\"\n",
+     "t.lua:3: yarn 'C' was never declared; declare it in pattern{ yarns = ... } (declared: A, B)"},
+    {"undeclared_yarn_in_text",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nrow \"k2 C, k2\"\n",
+     "t.lua:3: row 1 \"k2 C, k2\": yarn 'C' in 'k2 C' was never declared; declare it in pattern{ yarns = ... }"},
+    {"cast_on_undeclared_yarn",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4, \"Z\")\n",
+     "t.lua:2: yarn 'Z' was never declared; declare it in pattern{ yarns = ... } (declared: A, B)"},
+    {"ws_cable_flat",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2 } }, knitting = \"flat\" }\ncast_on(8)\nrow \"k\"\nrow \"C4F, k4\"\n",
+     "t.lua:4: row 2 \"C4F, k4\" is a wrong-side row: C4F has no wrong-side form; work it on a right-side row"},
+    {"chart_unknown_symbol",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nchart [[\n  | | . .\n  | | Q .\n]]\n",
+     "t.lua:5: unknown chart symbol 'Q'; did you mean . (p)? The legend has . / O U V \\ ^ k p v x | and stitch names such as C4F"},
+    {"chart_width",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(10)\nchart [[\n  | | . .\n]]\n",
+     "t.lua:4: chart row 1 (row 1) is 4 stitches wide and does not repeat evenly across 10 live stitches (2 left over); make the live count a multiple of 4"},
+    {"chart_empty",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nchart [[\n\n]]\n",
+     "t.lua:3: the chart has no rows"},
+    {"chart_bad_rep",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nchart { [[| .]], rep = 0 }\n",
+     "t.lua:3: chart{}.rep is 0; it must be from 1 to 100000"},
+    {"legend_unknown_stitch",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nlegend { [\"#\"] = \"kx\" }\n",
+     "t.lua:3: legend[\"#\"] is 'kx', an unknown stitch; did you mean k?"},
+    {"tucks_stacked",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nrows(5, \"tuck, k\")\n",
+     "t.lua:3: row 5 stacks 5 tucks on stitch 2; a needle holds at most 4 before they cannot be knitted off: knit the stitch in between"},
+    {"rows_after_bind_off",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nrow \"k\"\nbind_off()\nrow \"k\"\n",
+     "t.lua:5: no live stitches: all were bound off at line 4"},
+    {"bind_off_at_once",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nbind_off()\n",
+     "t.lua:3: bind_off right after cast_on leaves no fabric; knit some rows first"},
+    {"require_missing",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\nlocal m = require \"nope\"\n",
+     "t.lua:2: module \"nope\" not found; looked for:\n\tlib/nope.lua\n\t@LIB@/nope.lua"},
+    {"require_escape",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\nlocal m = require \"../../etc/passwd\"\n",
+     "t.lua:2: module name \"../../etc/passwd\" must be letters, digits, _ and -, with dots between folders, e.g. \"lace.edgings\""},
+    {"lua_runtime_error",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nlocal x = nil + 1\n",
+     "t.lua:3: attempt to perform arithmetic on a nil value"},
+    {"error_with_table",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nerror({})\n",
+     "t.lua:3: error raised with a table value instead of a message; pass error() a string"},
+    {"syntax_error",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nrow \"k\"\nfor\n",
+     "t.lua:5: <name> expected near <eof>"},
+    {"course_number_item",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\ncourse { k, 3 }\n",
+     "t.lua:3: course{} item 2 is a number; give stitches such as k, p, k2tog or \"sl1 wyif\""},
+    {"course_unknown_field",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\ncourse { k, p, times = 2 }\n",
+     "t.lua:3: unknown field 'times' in course{}; known fields: rep, yarn"},
+    {"course_empty",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\ncourse {}\n",
+     "t.lua:3: course{} lists no stitches; give some, e.g. course { k, p }"},
+    {"course_rep_mismatch",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(12)\ncourse { k, k, p, p, rep = 2 }\n",
+     "t.lua:3: row 1 \"(k, k, p, p) x2\" uses 8 stitches but 12 are live (4 left over); add 4 stitches or change the repeat"},
+    {"row_not_text",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nrow(5)\n",
+     "t.lua:3: row takes the row's written instructions as a string, e.g. row(\"k2, p2\"), not a number"},
+    {"decreased_to_nothing",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(2)\nrow \"k2tog\"\nrow \"k2tog\"\n",
+     "t.lua:4: row 2 \"k2tog\": k2tog at the edge has no neighbour to work with: it needs 2 stitches but 1 is left; move it in from the edge"},
+    {"undefined_verb",
+     "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nrows_(2, \"k\")\n",
+     "t.lua:3: attempt to call a nil value (global 'rows_'); did you mean rows?"},
+};
+
+std::string expected(const BadScript& script) {
+  std::string m = script.message;
+  const std::string lib = std::string(KNITC_SOURCE_DIR) + "/patterns/lib";
+  for (auto at = m.find("@LIB@"); at != std::string::npos; at = m.find("@LIB@")) m.replace(at, 5, lib);
+  return m;
+}
+
+class Catalogue : public ::testing::TestWithParam<BadScript> {};
+
+TEST_P(Catalogue, FailsWithItsMessage) {
+  const BadScript& script = GetParam();
+  try {
+    runtime::run_pattern(script.source, "t.lua");
+    FAIL() << "no error";
+  } catch (const runtime::PatternError& e) {
+    EXPECT_EQ(e.what(), expected(script));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(BadScripts, Catalogue, ::testing::ValuesIn(catalogue),
+                         [](const ::testing::TestParamInfo<BadScript>& p) { return std::string(p.param.name); });
+
+TEST(CatalogueSize, HasAtLeastFortyScripts) { EXPECT_GE(std::size(catalogue), 40u); }
+
+// Through the command line: exit 1, the message on stderr, and no file written.
+TEST(CatalogueCli, ExitsOneAndWritesNothing) {
+  const auto dir = test::scratch_dir("catalogue");
+  for (const BadScript& script : catalogue) {
+    test::write_text(dir / "t.lua", script.source);
+    const auto r = test::run_knitc("build '" + (dir / "t.lua").string() + "' -o '" + (dir / "out.glb").string() + "'");
+    EXPECT_EQ(r.exit_code, 1) << script.name;
+    EXPECT_NE(r.err.find(":"), std::string::npos) << script.name;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.glb")) << script.name;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace knitc
