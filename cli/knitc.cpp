@@ -149,6 +149,14 @@ void add_pattern_options(CLI::App* cmd, Args& a) {
   cmd->add_option("pattern", a.pattern, "the pattern script (.lua)")->required();
   cmd->add_option("-I,--include", a.run.module_dirs, "a folder `require` searches first (repeatable)");
   cmd->add_option("--seed", a.run.seed, "math.random's seed, over the pattern's own");
+  cmd->add_option_function<std::uint64_t>(
+         "--max-instructions", [&a](std::uint64_t millions) { a.run.limits.instructions = millions * 1'000'000; },
+         "millions of Lua instructions a script may run (default 200)")
+      ->check(CLI::Range(1, 100'000));
+  cmd->add_option_function<std::size_t>(
+         "--max-memory", [&a](std::size_t mib) { a.run.limits.memory_bytes = mib << 20; },
+         "MiB of memory a script may hold (default 256)")
+      ->check(CLI::Range(1, 16384));
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing on success");
 }
 

@@ -147,6 +147,27 @@ TEST(Cli, RendersAPreviewPng) {
   fs::remove_all(dir);
 }
 
+TEST(Cli, ChartCheckAndReference) {
+  const auto chart = test::run_knitc("chart patterns/jersey.lua");
+  ASSERT_EQ(chart.exit_code, 0) << chart.err;
+  EXPECT_EQ(chart.out.rfind("# jersey: 24 rows on 20 stitches, in the round", 0), 0u);
+  EXPECT_NE(chart.out.find("| | | | | | | | | | | | | | | | | | | |  24\n"), std::string::npos);
+  const auto check = test::run_knitc("check patterns/jersey.lua");
+  EXPECT_EQ(check.exit_code, 0);
+  EXPECT_EQ(check.err, "patterns/jersey.lua: 24 rows, 20 stitches cast on, 20 live at the end\n");
+  const auto dir = test::scratch_dir("check");
+  test::write_text(dir / "loop.lua", "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } } }\n"
+                                     "while true do end\n");
+  const auto loop = test::run_knitc("check --max-instructions 5 " + quoted(dir / "loop.lua"));
+  EXPECT_EQ(loop.exit_code, 1);
+  EXPECT_NE(loop.err.find("loop.lua:2: pattern ran too long (over 5 million"), std::string::npos) << loop.err;
+  EXPECT_EQ(test::run_knitc("check --max-memory 0 " + quoted(dir / "loop.lua")).exit_code, 2);
+  fs::remove_all(dir);
+  const auto reference = test::run_knitc("reference");
+  EXPECT_EQ(reference.exit_code, 0);
+  EXPECT_EQ(reference.out, test::read_text(fs::path(KNITC_SOURCE_DIR) / "docs/language.md"));
+}
+
 TEST(Cli, VersionAndHelpExitZero) {
   const auto v = test::run_knitc("--version");
   EXPECT_EQ(v.exit_code, 0);
