@@ -65,6 +65,14 @@ std::string join(std::span<const std::string_view> words) {
   return out;
 }
 
+// "; did you mean k2tog?" when a known name is close, else where to look.
+std::string stitch_hint(const std::string& written) {
+  const std::string nearest = nearest_stitch_name(written);
+  const int distance = edit_distance(written, nearest);
+  if (distance <= std::max<int>(2, static_cast<int>(written.size()) / 3)) return "; did you mean " + nearest + "?";
+  return "; knitc does not know it yet (knitc reference lists the stitches it knows)";
+}
+
 class Parser {
  public:
   Parser(std::string_view text, std::span<const std::string> yarns) : text_(text), tokens_(tokenize(text)), yarns_(yarns) {}
@@ -127,9 +135,13 @@ class Parser {
         (words.size() == 1 && words[0] == "across")) {
       return true;
     }
-    if (words.size() == 4 && words[0] == "to" && words[1] == "last" && whole(words[2]) &&
-        (words[3] == "st" || words[3] == "sts" || words[3] == "stitch" || words[3] == "stitches")) {
+    auto is_st = [](const std::string& w) { return w == "st" || w == "sts" || w == "stitch" || w == "stitches"; };
+    if (words.size() == 4 && words[0] == "to" && words[1] == "last" && whole(words[2]) && is_st(words[3])) {
       r.to_last = *whole(words[2]);
+      return true;
+    }
+    if (words.size() == 3 && words[0] == "to" && words[1] == "last" && is_st(words[2])) {  // "to last st"
+      r.to_last = 1;
       return true;
     }
     fail("\"rep from * " + join(std::vector<std::string_view>(words.begin(), words.end())) +
@@ -244,7 +256,7 @@ class Parser {
           return false;
         }
       }
-      fail("unknown stitch '" + written + "'; did you mean " + nearest_stitch_name(written) + "?");
+      fail("unknown stitch '" + written + "'" + stitch_hint(written));
       return false;
     }
     if (explicit_count && !stitch(*id).counted) {
