@@ -21,10 +21,9 @@ std::string cell(const StitchDef& s) {
 std::string chart_text(const Pattern& pattern) {
   const std::size_t rows = pattern.courses.size();
   const std::size_t number_width = std::to_string(rows).size();
+  // Yarn ids go beside the rows when any stitch is worked in another yarn than the cast-on's.
   const bool colours = std::any_of(pattern.courses.begin(), pattern.courses.end(), [&](const Course& c) {
-    return std::any_of(c.ops.begin(), c.ops.end(), [&](const Op& op) { return op.yarn != c.ops.front().yarn; });
-  }) || std::any_of(pattern.courses.begin(), pattern.courses.end(), [&](const Course& c) {
-    return !c.ops.empty() && c.ops.front().yarn != pattern.courses.front().ops.front().yarn;
+    return std::any_of(c.ops.begin(), c.ops.end(), [&](const Op& op) { return op.yarn != pattern.cast_on_yarn; });
   });
   std::vector<std::string> lines;
   std::size_t widest = 0;
