@@ -34,6 +34,16 @@ std::string called_from(lua_State* L, const SourceLocation& at) {
   return "";
 }
 
+SourceLocation pattern_location(lua_State* L, const SourceLocation& fallback) {
+  const std::string& main = sandbox_of(L).file;
+  lua_Debug ar;
+  for (int level = 1; lua_getstack(L, level, &ar) != 0; ++level) {
+    if (lua_getinfo(L, "Sl", &ar) != 0 && ar.currentline > 0 && ar.source[0] == '@' && main == ar.source + 1)
+      return {main, ar.currentline};
+  }
+  return fallback;
+}
+
 void fail(lua_State* L, const std::string& message) { fail_at(L, caller_location(L), message); }
 
 void fail_at(lua_State* L, const SourceLocation& at, const std::string& message) {

@@ -75,9 +75,17 @@ int require_verb(lua_State* L) {
   lua_pushlightuserdata(L, &s);  // "loading": catches a module that requires itself
   lua_setfield(L, loaded, name.c_str());
   const std::string chunk = "@" + path;
-  if (luaL_loadbufferx(L, source.data(), source.size(), chunk.c_str(), "t") != LUA_OK) lua_error(L);
-  lua_pushstring(L, name.c_str());
-  lua_call(L, 1, 1);
+  int status = luaL_loadbufferx(L, source.data(), source.size(), chunk.c_str(), "t");
+  if (status == LUA_OK) {
+    lua_pushstring(L, name.c_str());
+    status = lua_pcall(L, 1, 1, 0);
+  }
+  if (status != LUA_OK) {
+    // Not loading any more: a later require reports the module's own error again.
+    lua_pushnil(L);
+    lua_setfield(L, loaded, name.c_str());
+    lua_error(L);
+  }
   if (lua_isnil(L, -1)) {
     lua_pop(L, 1);
     lua_pushboolean(L, 1);

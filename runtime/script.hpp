@@ -39,6 +39,9 @@ Script& script_of(lua_State* L);
 // The script line that called the running binding, and its chunk.
 SourceLocation caller_location(lua_State* L);
 int caller_line(lua_State* L);
+// The pattern file's own line that led here (a course worked by a library function is
+// the designer's call), or `fallback` when no frame is in the pattern file.
+SourceLocation pattern_location(lua_State* L, const SourceLocation& fallback);
 std::string show(double v);
 
 std::optional<double> number_field(lua_State* L, int index, const std::string& table, const char* key);

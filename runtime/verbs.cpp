@@ -31,7 +31,7 @@ void add_course(lua_State* L, std::vector<Op> ops, const SourceLocation& where) 
   Course c;
   c.ops = std::move(ops);
   c.side = side_of(s, next_row(s));
-  c.where = where;
+  c.where = where.file == sandbox_of(L).file ? where : pattern_location(L, where);
   const int live = produced(c);
   if (live > max_stitches)
     fail(L, "row " + std::to_string(next_row(s)) + " leaves " + std::to_string(live) + " stitches; at most " +
@@ -263,6 +263,13 @@ int chart_verb(lua_State* L) {
       std::vector<Op> ops;
       ops.reserve(rows[i].cells.size() * (s.live / width));
       // A chart is drawn as the face looks: its cells are face view already, on either side.
+      if (side_of(s, next_row(s)) == Side::wrong) {
+        for (const auto& cell : rows[i].cells) {
+          if (!wrong_side_face(cell.stitch))
+            located(name + " is a wrong-side row: " + std::string(stitch(cell.stitch).name) +
+                    " has no wrong-side form in knitc; put it on a right-side (odd) row");
+        }
+      }
       for (int k = 0; k < s.live / width; ++k) {
         for (const auto& cell : rows[i].cells) ops.push_back({cell.stitch, cell.yarn < 0 ? s.current_yarn : cell.yarn});
       }

@@ -136,6 +136,17 @@ TEST(Charts, ErrorsPointAtTheChartLine) {
   }
 }
 
+TEST(Charts, StitchesWithoutAWrongSideFormStayOnRightSideRows) {
+  try {
+    run("cast_on(8)\nchart [[\n. . C4F---- . .\n. . | | | | . .\n]]\n", true);
+    FAIL();
+  } catch (const runtime::PatternError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "t.lua:4: chart row 2 (row 2) is a wrong-side row: C4F has no wrong-side form in knitc; put it on a "
+              "right-side (odd) row");
+  }
+}
+
 TEST(ChartText, NumbersEachRowOnTheSideItIsReadFrom) {
   const Pattern p = run("cast_on(4)\nrow \"k2, p2\"\nrow \"k1, p1\"\nrow \"k2tog, yo, k2\"\n", true);
   EXPECT_EQ(writers::chart_text(p),

@@ -1,0 +1,99 @@
+-- lace: eyelets and lace patterns that keep the stitch count: every yarn over is paired
+-- with a decrease in the same row.
+--
+--   local lace = require "lace"
+--
+--   lace.eyelet_row([rows])  one row of eyelets, k1, *yo, k2tog; rep from * to last st,
+--                            k1, then rows - 1 rows of stockinette (rows defaults to 1):
+--                            a drawstring or ribbon row. An even count of 4 or more. On
+--                            a wrong-side row it is worked p1, *yo, p2tog, ..., p1.
+--   lace.chevron(rows)       chevron lace: *k1, yo, k2, cdd, k2, yo; rep from * on odd
+--                            rows, stockinette on even rows. A multiple of 8.
+--   lace.feather_and_fan(rows)
+--                            feather and fan (Old Shale), a 4-row repeat: row 1 knit,
+--                            row 2 purl (the face knit), row 3 *(k2tog) x3, (yo, k1) x6,
+--                            (k2tog) x3; rep from *, row 4 knit (the face purl, a
+--                            ridge). A multiple of 18; rows a multiple of 4 ends a repeat.
+--
+-- Each works `rows` rows (a whole number, 1 or more) and returns nothing. Chevron and
+-- feather and fan follow the row numbers of the whole piece (row_number()), as a chart
+-- would: their lace rows are the odd rows, the right side in flat knitting, and a second
+-- call continues the first. Flat or in the round, the face comes out the same. A bad
+-- argument is an error at the line that called the function.
+
+local lace = {}
+
+local row, live, knitting, row_number = row, live, knitting, row_number
+
+local function whole(value, least)
+  if type(value) ~= "number" then return nil end
+  local n = math.tointeger(value)
+  if n == nil or n < least then return nil end
+  return n
+end
+
+local function shown(value)
+  if type(value) == "number" or value == nil then return tostring(value) end
+  return "a " .. type(value)
+end
+
+local function rows_problem(name, rows)
+  if whole(rows, 1) then return nil end
+  return name .. ": rows must be a whole number from 1 up, not " .. shown(rows)
+end
+
+local function wrong_side()
+  return knitting() == "flat" and row_number() % 2 == 0
+end
+
+-- One row whose face is all knit (stockinette) or all purl.
+local function plain_row(face_knit)
+  row((face_knit ~= wrong_side()) and "k" or "p")
+end
+
+-- What is wrong with the live count for a pattern repeating over `multiple`, or nil.
+local function multiple_problem(name, multiple, least)
+  local n = live()
+  if n == 0 or (n % multiple == 0 and n >= least) then return nil end
+  return ("%s needs a multiple of %d stitches%s; %d are live"):format(
+    name, multiple, least > multiple and (", at least " .. least) or "", n)
+end
+
+function lace.eyelet_row(rows)
+  if rows == nil then rows = 1 end
+  local problem = rows_problem("lace.eyelet_row", rows) or multiple_problem("lace.eyelet_row", 2, 4)
+  if problem then error(problem, 2) end
+  if wrong_side() then
+    row "p1, *yo, p2tog; rep from * to last 1 st, p1"
+  else
+    row "k1, *yo, k2tog; rep from * to last 1 st, k1"
+  end
+  for _ = 2, rows do plain_row(true) end
+end
+
+function lace.chevron(rows)
+  local problem = rows_problem("lace.chevron", rows) or multiple_problem("lace.chevron", 8, 8)
+  if problem then error(problem, 2) end
+  for _ = 1, rows do
+    if row_number() % 2 == 1 then
+      row "*k1, yo, k2, cdd, k2, yo; rep from *"
+    else
+      plain_row(true)
+    end
+  end
+end
+
+function lace.feather_and_fan(rows)
+  local problem = rows_problem("lace.feather_and_fan", rows) or multiple_problem("lace.feather_and_fan", 18, 18)
+  if problem then error(problem, 2) end
+  for _ = 1, rows do
+    local step = (row_number() - 1) % 4 + 1
+    if step == 3 then
+      row "*(k2tog) x3, (yo, k1) x6, (k2tog) x3; rep from *"
+    else
+      plain_row(step ~= 4)
+    end
+  end
+end
+
+return lace

@@ -1,0 +1,147 @@
+-- ribs: ribbing and the small knit-and-purl textures, as functions that work rows.
+--
+--   local ribs = require "ribs"
+--
+--   ribs.rib(rows, knits, purls)  a kN, pM rib. Stitches: a multiple of knits + purls,
+--                                 or that plus knits (the rib then starts and ends with
+--                                 knits: the usual way to rib a flat piece).
+--   ribs.k1p1(rows)               k1, p1 rib: a multiple of 2, or of 2 plus 1.
+--   ribs.k2p2(rows)               k2, p2 rib: a multiple of 4, or of 4 plus 2.
+--   ribs.garter(rows)             garter stitch: knit every row flat; in the round knit and
+--                                 purl rows alternate. Any stitch count.
+--   ribs.seed(rows)               seed stitch (US seed, UK moss): k1, p1, moved over one
+--                                 stitch every row. Any count of 2 or more.
+--   ribs.moss(rows)               US moss stitch (UK double moss): k1, p1, moved over one
+--                                 stitch every 2 rows, a 4-row repeat. Any count of 2 or
+--                                 more. For UK moss stitch call ribs.seed.
+--
+-- Each function works `rows` rows (a whole number, 1 or more) and returns nothing. The
+-- face comes out the same flat or in the round: the functions ask knitting() and
+-- row_number() and write a wrong-side row as a knitter does (k where the face shows p).
+-- Garter, seed and moss follow the row numbers of the whole piece, as a chart would (odd
+-- rows of garter show knit, even rows the purl ridge), so two calls in a row continue one
+-- fabric. A bad argument is an error at the line that called the function.
+-- No twisted rib: the stitch vocabulary has no "through the back loop" yet.
+
+local ribs = {}
+
+local row, live, knitting, row_number = row, live, knitting, row_number
+
+-- A whole number of at least `least`, or nil.
+local function whole(value, least)
+  if type(value) ~= "number" then return nil end
+  local n = math.tointeger(value)
+  if n == nil or n < least then return nil end
+  return n
+end
+
+local function shown(value)
+  if type(value) == "number" or value == nil then return tostring(value) end
+  return "a " .. type(value)
+end
+
+local function rows_problem(name, rows)
+  if whole(rows, 1) then return nil end
+  return name .. ": rows must be a whole number from 1 up, not " .. shown(rows)
+end
+
+-- The next row is worked from the wrong side: flat knitting, an even row.
+local function wrong_side()
+  return knitting() == "flat" and row_number() % 2 == 0
+end
+
+local function sts(n)
+  return n == 1 and "1 st" or n .. " sts"
+end
+
+-- A kA, pB rib's written rows on n stitches: the right-side text and the wrong-side text
+-- (which shows the same face), or nil when n does not fit the rib.
+local function rib_texts(n, a, b)
+  if n % (a + b) == 0 then
+    return ("k%d, p%d"):format(a, b), ("k%d, p%d"):format(b, a)
+  end
+  if n % (a + b) == a and n >= 2 * a + b then
+    return ("*k%d, p%d; rep from * to last %s, k%d"):format(a, b, sts(a), a),
+        ("*p%d, k%d; rep from * to last %s, p%d"):format(a, b, sts(a), a)
+  end
+  return nil
+end
+
+-- Works a rib, or returns what is wrong before working anything.
+local function work_rib(name, rows, a, b)
+  local problem = rows_problem(name, rows)
+  if problem then return problem end
+  local n = live()
+  local rs, ws = rib_texts(n, a, b)
+  if n > 0 and not rs then
+    return ("%s needs a multiple of %d stitches, or of %d plus %d; %d are live"):format(name, a + b, a + b, a, n)
+  end
+  for _ = 1, rows do
+    if wrong_side() then row(ws) else row(rs) end
+  end
+  return nil
+end
+
+function ribs.rib(rows, knits, purls)
+  local a, b = whole(knits, 1), whole(purls, 1)
+  if not a then error("ribs.rib: knits must be a whole number from 1 up, not " .. shown(knits), 2) end
+  if not b then error("ribs.rib: purls must be a whole number from 1 up, not " .. shown(purls), 2) end
+  local problem = work_rib(("ribs.rib(%d, %d)"):format(a, b), rows, a, b)
+  if problem then error(problem, 2) end
+end
+
+function ribs.k1p1(rows)
+  local problem = work_rib("ribs.k1p1", rows, 1, 1)
+  if problem then error(problem, 2) end
+end
+
+function ribs.k2p2(rows)
+  local problem = work_rib("ribs.k2p2", rows, 2, 2)
+  if problem then error(problem, 2) end
+end
+
+function ribs.garter(rows)
+  local problem = rows_problem("ribs.garter", rows)
+  if problem then error(problem, 2) end
+  for _ = 1, rows do
+    local face_knit = row_number() % 2 == 1
+    -- A row shows knit on the face when worked k from the right side or p from the wrong.
+    row((face_knit ~= wrong_side()) and "k" or "p")
+  end
+end
+
+-- One row of k1, p1 whose rightmost stitch on the face is a knit (right_knit) or a purl.
+local function k1p1_row(n, right_knit)
+  if n % 2 == 0 then
+    -- On an even count the same text shows the same face from either side.
+    row(right_knit and "k1, p1" or "p1, k1")
+  elseif right_knit ~= wrong_side() then
+    row("k1, *p1, k1; rep from *")
+  else
+    row("p1, *k1, p1; rep from *")
+  end
+end
+
+-- Seed and moss: k1, p1 whose phase follows the row number.
+local function work_k1p1_texture(name, rows, right_knit_on)
+  local problem = rows_problem(name, rows)
+  if problem then return problem end
+  local n = live()
+  if n == 1 then return name .. " needs at least 2 stitches; 1 is live" end
+  for _ = 1, rows do
+    k1p1_row(n, right_knit_on(row_number()))
+  end
+  return nil
+end
+
+function ribs.seed(rows)
+  local problem = work_k1p1_texture("ribs.seed", rows, function(r) return r % 2 == 1 end)
+  if problem then error(problem, 2) end
+end
+
+function ribs.moss(rows)
+  local problem = work_k1p1_texture("ribs.moss", rows, function(r) return (r - 1) % 4 < 2 end)
+  if problem then error(problem, 2) end
+end
+
+return ribs

@@ -1,0 +1,462 @@
+// The pattern library (patterns/lib: ribs, cables, lace) and require: each library
+// function makes the same fabric as the rows written out by hand, flat and in the round;
+// bad arguments are errors at the caller's line; require finds modules in the -I
+// folders, the pattern's own lib/ and the library, in that order, runs each once, and
+// reaches nothing else.
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "runtime.hpp"
+#include "support.hpp"
+#include "writers/writers.hpp"
+
+namespace knitc {
+namespace {
+
+namespace fs = std::filesystem;
+using runtime::PatternError;
+
+// A script: line 1 declares the pattern, line 2 requires the library, line 3 casts on,
+// the body starts on line 4.
+std::string script(const std::string& knitting, int stitches, const std::string& body) {
+  return "pattern { name = \"m\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.0 } }, "
+         "knitting = \"" + knitting + "\" }\n"
+         "local ribs, cables, lace = require \"ribs\", require \"cables\", require \"lace\"\n"
+         "cast_on(" + std::to_string(stitches) + ")\n" + body;
+}
+
+Pattern run(const std::string& knitting, int stitches, const std::string& body) {
+  return runtime::run_pattern(script(knitting, stitches, body), "t.lua").pattern;
+}
+
+// The message a script fails with, or "" if it runs.
+std::string error_of(const std::string& source, const std::string& file = "t.lua",
+                     const runtime::RunOptions& options = {}) {
+  try {
+    runtime::run_pattern(source, file, options);
+  } catch (const PatternError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string error_of(const std::string& knitting, int stitches, const std::string& body) {
+  return error_of(script(knitting, stitches, body));
+}
+
+// The library call and the rows written by hand make one fabric (Pattern's == ignores
+// where each row was written); on failure both charts are shown.
+::testing::AssertionResult same_fabric(const std::string& knitting, int stitches, const std::string& library,
+                                       const std::string& by_hand) {
+  Pattern a, b;
+  try {
+    a = run(knitting, stitches, library);
+    b = run(knitting, stitches, by_hand);
+  } catch (const PatternError& e) {
+    return ::testing::AssertionFailure() << knitting << ", " << stitches << " sts: " << e.what();
+  }
+  if (a == b) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << knitting << ", " << stitches << " sts: " << library
+                                       << "\nthe library made:\n" << writers::chart_text(a)
+                                       << "\nby hand:\n" << writers::chart_text(b);
+}
+
+const std::vector<std::string> both = {"round", "flat"};
+
+// The names a module exports, sorted.
+std::string exports_of(const std::string& module) {
+  const std::string message = error_of(
+      "local names = {}\nfor name in pairs(require \"" + module + "\") do names[#names + 1] = name end\n"
+      "table.sort(names)\nerror(table.concat(names, \" \"), 0)\n");
+  return message;
+}
+
+TEST(ModulesLibrary, ExportsExactlyTheFunctionsTestedHere) {
+  EXPECT_EQ(exports_of("ribs"), "garter k1p1 k2p2 moss rib seed");
+  EXPECT_EQ(exports_of("cables"), "horseshoe rope");
+  EXPECT_EQ(exports_of("lace"), "chevron eyelet_row feather_and_fan");
+}
+
+// ---- ribs ----
+
+TEST(ModulesRibs, K2p2IsTheWrittenRib) {
+  for (const auto& k : both) {
+    EXPECT_TRUE(same_fabric(k, 12, "ribs.k2p2(4)", "rows(4, \"k2, p2\")"));
+    // 4 x 3 + 2: starts and ends with k2, the wrong side written as it faces the knitter.
+    EXPECT_TRUE(same_fabric(k, 14, "ribs.k2p2(3)",
+                            k == "flat" ? "row \"k2, (p2, k2) x3\" row \"p2, (k2, p2) x3\" row \"k2, (p2, k2) x3\""
+                                        : "rows(3, \"k2, (p2, k2) x3\")"));
+  }
+  // Drawn as the face looks, flat or round: the knit columns stack.
+  for (const auto& k : both) EXPECT_TRUE(same_fabric(k, 8, "ribs.k2p2(3)", "chart { [[\n. . | |\n]], rep = 3 }"));
+}
+
+TEST(ModulesRibs, K1p1IsTheWrittenRib) {
+  for (const auto& k : both) EXPECT_TRUE(same_fabric(k, 10, "ribs.k1p1(5)", "rows(5, \"k1, p1\")"));
+  EXPECT_TRUE(same_fabric("flat", 9, "ribs.k1p1(4)", "for i = 1, 2 do row \"k1, (p1, k1) x4\" row \"p1, (k1, p1) x4\" end"));
+  EXPECT_TRUE(same_fabric("round", 9, "ribs.k1p1(4)", "rows(4, \"k1, (p1, k1) x4\")"));
+}
+
+TEST(ModulesRibs, AnyRibOfKnitsAndPurls) {
+  // k2, p1 flat: the wrong side reads k1, p2; the face shows the same columns every row.
+  EXPECT_TRUE(same_fabric("flat", 12, "ribs.rib(4, 2, 1)", "for i = 1, 2 do row \"k2, p1\" row \"k1, p2\" end"));
+  for (const auto& k : both) EXPECT_TRUE(same_fabric(k, 12, "ribs.rib(4, 2, 1)", "chart { [[\n. | |\n]], rep = 4 }"));
+  EXPECT_TRUE(same_fabric("round", 12, "ribs.rib(2, 3, 1)", "rows(2, \"k3, p1\")"));
+  // 3 x 3 + 2: k2 at both edges.
+  EXPECT_TRUE(same_fabric("flat", 11, "ribs.rib(2, 2, 1)", "row \"k2, (p1, k2) x3\" row \"p2, (k1, p2) x3\""));
+  // 1.0e0 counts as 1, as in the verbs.
+  EXPECT_TRUE(same_fabric("round", 10, "ribs.rib(2.0, 1.0, 1)", "rows(2, \"k1, p1\")"));
+}
+
+TEST(ModulesRibs, GarterKnitsEveryRowFlatAndAlternatesInTheRound) {
+  EXPECT_TRUE(same_fabric("flat", 10, "ribs.garter(4)", "rows(4, \"k\")"));
+  EXPECT_TRUE(same_fabric("round", 10, "ribs.garter(4)", "row \"k\" row \"p\" row \"k\" row \"p\""));
+  for (const auto& k : both) EXPECT_TRUE(same_fabric(k, 7, "ribs.garter(6)", "chart { [[\n.\n|\n]], rep = 3 }"));
+  // It follows the row numbers: after an odd number of rows a call continues the ridges.
+  EXPECT_TRUE(same_fabric("round", 6, "row \"k\" ribs.garter(3)", "row \"k\" row \"p\" row \"k\" row \"p\""));
+  EXPECT_TRUE(same_fabric("flat", 6, "row \"k\" ribs.garter(2) ribs.garter(1)", "rows(4, \"k\")"));
+}
+
+TEST(ModulesRibs, SeedMovesOverOneStitchEveryRow) {
+  for (const auto& k : both) {
+    EXPECT_TRUE(same_fabric(k, 8, "ribs.seed(4)", "for i = 1, 2 do row \"k1, p1\" row \"p1, k1\" end"));
+    EXPECT_TRUE(same_fabric(k, 8, "ribs.seed(4)", "chart { [[\n| .\n. |\n]], rep = 2 }"));
+    EXPECT_TRUE(same_fabric(k, 8, "row \"k\" ribs.seed(2)", "row \"k\" row \"p1, k1\" row \"k1, p1\""));
+  }
+  // An odd count flat: every row k1, *p1, k1, as a knitter writes it.
+  EXPECT_TRUE(same_fabric("flat", 7, "ribs.seed(4)", "rows(4, \"k1, *p1, k1; rep from *\")"));
+  EXPECT_TRUE(same_fabric("round", 7, "ribs.seed(4)", "for i = 1, 2 do row \"k1, (p1, k1) x3\" row \"p1, (k1, p1) x3\" end"));
+  for (const auto& k : both)
+    EXPECT_TRUE(same_fabric(k, 7, "ribs.seed(2)", "chart [[\n. | . | . | .\n| . | . | . |\n]]"));
+}
+
+TEST(ModulesRibs, MossIsUsMossStitchAFourRowRepeat) {
+  for (const auto& k : both) {
+    EXPECT_TRUE(same_fabric(k, 8, "ribs.moss(8)",
+                            "for i = 1, 2 do rows(2, \"k1, p1\") rows(2, \"p1, k1\") end"));
+    EXPECT_TRUE(same_fabric(k, 6, "ribs.moss(6)", "chart { [[\n| .\n| .\n. |\n. |\n]] } chart [[\n. |\n. |\n]]"));
+  }
+  // An odd count flat: rows 1 and 4 k1, *p1, k1; rows 2 and 3 p1, *k1, p1.
+  EXPECT_TRUE(same_fabric("flat", 9, "ribs.moss(4)",
+                          "row \"k1, (p1, k1) x4\" rows(2, \"p1, (k1, p1) x4\") row \"k1, (p1, k1) x4\""));
+}
+
+// ---- cables ----
+
+TEST(ModulesCables, RopeDefaultsToC4FEveryFourRowsBetweenTwoPurls) {
+  // 14 = (4 + 2) x 2 + 2; crossings on rows 3 and 7, right-side rows when flat.
+  const std::string rs = "row \"p2, k4, p2, k4, p2\"\n", ws = "row \"k2, p4, k2, p4, k2\"\n",
+                    cross = "row \"p2, C4F, p2, C4F, p2\"\n";
+  EXPECT_TRUE(same_fabric("flat", 14, "cables.rope { rows = 8 }", rs + ws + cross + ws + rs + ws + cross + ws));
+  EXPECT_TRUE(same_fabric("round", 14, "cables.rope { rows = 8 }", rs + rs + cross + rs + rs + rs + cross + rs));
+}
+
+TEST(ModulesCables, RopeOptions) {
+  // C6B every 3 rows with no purls between: rounds 2 and 5 cross.
+  EXPECT_TRUE(same_fabric("round", 12, "cables.rope { rows = 6, width = 6, cross = \"back\", cross_every = 3, purl_border = 0 }",
+                          "row \"k12\" row \"C6B, C6B\" rows(2, \"k\") row \"(C6B) x2\" row \"k\""));
+  // C8F every 8 rows flat, one purl around: rows 7 and 15 cross.
+  const std::string rs = "row \"p1, k8, p1, k8, p1\"\n", ws = "row \"k1, p8, k1, p8, k1\"\n",
+                    cross = "row \"p1, C8F, p1, C8F, p1\"\n";
+  std::string by_hand;
+  for (int r = 1; r <= 16; ++r) by_hand += r % 8 == 7 ? cross : r % 2 == 1 ? rs : ws;
+  EXPECT_TRUE(same_fabric("flat", 19, "cables.rope { rows = 16, width = 8, cross_every = 8, purl_border = 1 }", by_hand));
+  // C2B every right-side row.
+  EXPECT_TRUE(same_fabric("flat", 10, "cables.rope { rows = 4, width = 2, cross = \"back\", cross_every = 2 }",
+                          "for i = 1, 2 do row \"p2, C2B, p2, C2B, p2\" row \"k2, p2, k2, p2, k2\" end"));
+}
+
+TEST(ModulesCables, ACalledAgainPanelKeepsItsRhythm) {
+  // The crossings follow the row numbers: rows 3, 7 and 11 whether in one call or three.
+  for (const auto& k : both)
+    EXPECT_TRUE(same_fabric(k, 8, "cables.rope { rows = 5 } cables.rope { rows = 2 } cables.rope { rows = 5 }",
+                            "cables.rope { rows = 12 }"));
+  // Rows worked before the panel count too: its first crossing is row 7, not its own row 3.
+  EXPECT_TRUE(same_fabric("round", 8, "rows(4, \"p2, k4, p2\") cables.rope { rows = 4 }",
+                          "rows(6, \"p2, k4, p2\") row \"p2, C4F, p2\" row \"p2, k4, p2\""));
+}
+
+TEST(ModulesCables, HorseshoeCrossesBothWaysFromTheCentre) {
+  const std::string rs = "row \"p2, k8, p2\"\n", ws = "row \"k2, p8, k2\"\n", cross = "row \"p2, C4B, C4F, p2\"\n";
+  EXPECT_TRUE(same_fabric("flat", 12, "cables.horseshoe { rows = 6 }", rs + ws + cross + ws + rs + ws));
+  EXPECT_TRUE(same_fabric("round", 12, "cables.horseshoe { rows = 6 }", rs + rs + cross + rs + rs + rs));
+  // 12 wide, a purl between, crossing on every right-side row.
+  EXPECT_TRUE(same_fabric("flat", 27, "cables.horseshoe { rows = 4, width = 12, cross_every = 2, purl_border = 1 }",
+                          "for i = 1, 2 do row \"p1, C6B, C6F, p1, C6B, C6F, p1\" row \"k1, p12, k1, p12, k1\" end"));
+}
+
+// ---- lace ----
+
+TEST(ModulesLace, EyeletRow) {
+  for (const auto& k : both) EXPECT_TRUE(same_fabric(k, 10, "lace.eyelet_row()", "row \"k1, (yo, k2tog) x4, k1\""));
+  EXPECT_TRUE(same_fabric("flat", 10, "lace.eyelet_row(3)", "row \"k1, (yo, k2tog) x4, k1\" row \"p\" row \"k\""));
+  EXPECT_TRUE(same_fabric("round", 10, "lace.eyelet_row(3)", "row \"k1, (yo, k2tog) x4, k1\" rows(2, \"k\")"));
+  // On a wrong-side row it is worked with p2tog, which shows as k2tog on the face.
+  EXPECT_TRUE(same_fabric("flat", 10, "row \"k\" lace.eyelet_row()", "row \"k\" row \"p1, (yo, p2tog) x4, p1\""));
+  // Worked left to right from the back: k1, yo, k2tog, k1 on the face, read from the left.
+  EXPECT_TRUE(same_fabric("flat", 4, "row \"k\" lace.eyelet_row()", "row \"k\" chart [[\n| O / |\n]]"));
+}
+
+TEST(ModulesLace, Chevron) {
+  const std::string lace_row = "row \"k1, yo, k2, cdd, k2, yo, k1, yo, k2, cdd, k2, yo\"\n";
+  EXPECT_TRUE(same_fabric("flat", 16, "lace.chevron(4)", lace_row + "row \"p\"\n" + lace_row + "row \"p\"\n"));
+  EXPECT_TRUE(same_fabric("round", 16, "lace.chevron(4)", lace_row + "row \"k\"\n" + lace_row + "row \"k\"\n"));
+  // The lace rows are the odd rows of the piece, the right side when flat.
+  EXPECT_TRUE(same_fabric("flat", 8, "row \"k\" lace.chevron(2)", "row \"k\" row \"p\" row \"k1, yo, k2, cdd, k2, yo\""));
+  for (const auto& k : both)
+    EXPECT_TRUE(same_fabric(k, 8, "lace.chevron(2)", "chart [[\n| | | | | | | |\nO | | ^ | | O |\n]]"));
+}
+
+TEST(ModulesLace, FeatherAndFan) {
+  const std::string fan =
+      "row \"k2tog, k2tog, k2tog, yo, k1, yo, k1, yo, k1, yo, k1, yo, k1, yo, k1, k2tog, k2tog, k2tog\"\n";
+  EXPECT_TRUE(same_fabric("flat", 18, "lace.feather_and_fan(8)",
+                          "for i = 1, 2 do row \"k\" row \"p\" " + fan + " row \"k\" end"));
+  EXPECT_TRUE(same_fabric("round", 36, "lace.feather_and_fan(8)",
+                          "for i = 1, 2 do row \"k\" row \"k\" " + fan + " row \"p\" end"));
+  EXPECT_TRUE(same_fabric("flat", 18, "lace.feather_and_fan(1) lace.feather_and_fan(3)", "lace.feather_and_fan(4)"));
+  // Every row keeps the stitch count.
+  for (const auto& c : run("flat", 36, "lace.feather_and_fan(4)").courses) EXPECT_EQ(produced(c), 36);
+}
+
+// ---- errors in library calls are at the caller's line ----
+
+struct BadCall {
+  const char* knitting;
+  int stitches;
+  const char* body;     // from line 4
+  const char* message;  // exact
+};
+
+void PrintTo(const BadCall& call, std::ostream* os) { *os << call.body; }
+
+class ModulesErrors : public ::testing::TestWithParam<BadCall> {};
+
+TEST_P(ModulesErrors, PointAtTheCallersLine) {
+  EXPECT_EQ(error_of(GetParam().knitting, GetParam().stitches, GetParam().body), GetParam().message);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ModulesCatalogue, ModulesErrors,
+    ::testing::Values(
+        BadCall{"round", 12, "ribs.k2p2(2.5)\n", "t.lua:4: ribs.k2p2: rows must be a whole number from 1 up, not 2.5"},
+        BadCall{"flat", 12, "row \"k\"\nribs.k1p1(0)\n", "t.lua:5: ribs.k1p1: rows must be a whole number from 1 up, not 0"},
+        BadCall{"round", 12, "ribs.garter()\n", "t.lua:4: ribs.garter: rows must be a whole number from 1 up, not nil"},
+        BadCall{"round", 12, "ribs.seed(\"4\")\n", "t.lua:4: ribs.seed: rows must be a whole number from 1 up, not a string"},
+        BadCall{"round", 12, "local function band()\n  ribs.moss(-1)\nend\nband()\n",
+                "t.lua:5: ribs.moss: rows must be a whole number from 1 up, not -1"},
+        BadCall{"flat", 13, "ribs.k2p2(4)\n", "t.lua:4: ribs.k2p2 needs a multiple of 4 stitches, or of 4 plus 2; 13 are live"},
+        BadCall{"flat", 2, "ribs.k2p2(4)\n", "t.lua:4: ribs.k2p2 needs a multiple of 4 stitches, or of 4 plus 2; 2 are live"},
+        BadCall{"flat", 1, "ribs.seed(2)\n", "t.lua:4: ribs.seed needs at least 2 stitches; 1 is live"},
+        BadCall{"flat", 12, "ribs.rib(4, 0, 2)\n", "t.lua:4: ribs.rib: knits must be a whole number from 1 up, not 0"},
+        BadCall{"flat", 12, "ribs.rib(4, 2)\n", "t.lua:4: ribs.rib: purls must be a whole number from 1 up, not nil"},
+        BadCall{"flat", 13, "ribs.rib(4, 2, 1)\n", "t.lua:4: ribs.rib(2, 1) needs a multiple of 3 stitches, or of 3 plus 2; 13 are live"},
+        BadCall{"flat", 14, "cables.rope(4)\n", "t.lua:4: cables.rope takes a table, e.g. cables.rope{ rows = 12 }, not 4"},
+        BadCall{"flat", 14, "cables.rope {}\n", "t.lua:4: cables.rope: rows must be a whole number from 1 up, not nil"},
+        BadCall{"flat", 14, "cables.rope { rows = 4, width = 5 }\n", "t.lua:4: cables.rope: width must be 2, 4, 6 or 8, not 5"},
+        BadCall{"flat", 14, "cables.rope { rows = 4, crossevery = 2, colour = 1, [1] = 2 }\n",
+                "t.lua:4: cables.rope: unknown field(s) [1], colour, crossevery; known fields: cross, cross_every, "
+                "purl_border, rows, width"},
+        BadCall{"flat", 14, "cables.rope { rows = 4, cross_every = 3 }\n",
+                "t.lua:4: cables.rope: cross_every is 3, but flat cables cross on right-side rows only; make it even"},
+        BadCall{"flat", 14, "cables.rope { rows = 4, cross = \"left\" }\n",
+                "t.lua:4: cables.rope: cross must be \"front\" or \"back\", not \"left\""},
+        BadCall{"flat", 14, "cables.rope { rows = 4, purl_border = -1 }\n",
+                "t.lua:4: cables.rope: purl_border must be a whole number from 0 up, not -1"},
+        BadCall{"round", 13, "cables.rope { rows = 4 }\n",
+                "t.lua:4: cables.rope needs a multiple of 6 stitches plus 2 (width 4, purl_border 2); 13 are live"},
+        BadCall{"round", 10, "cables.rope { rows = 4, purl_border = 0 }\n",
+                "t.lua:4: cables.rope needs a multiple of 4 stitches (width 4, purl_border 0); 10 are live"},
+        BadCall{"round", 2, "cables.rope { rows = 4 }\n",
+                "t.lua:4: cables.rope needs a multiple of 6 stitches plus 2 (width 4, purl_border 2); 2 are live"},
+        BadCall{"flat", 12, "cables.horseshoe { rows = 4, cross = \"front\" }\n",
+                "t.lua:4: cables.horseshoe: unknown field(s) cross; known fields: cross_every, purl_border, rows, width"},
+        BadCall{"flat", 12, "cables.horseshoe { rows = 4, width = 6 }\n",
+                "t.lua:4: cables.horseshoe: width must be 4, 8, 12 or 16, not 6"},
+        BadCall{"flat", 12, "lace.chevron(4)\n", "t.lua:4: lace.chevron needs a multiple of 8 stitches; 12 are live"},
+        BadCall{"flat", 2, "lace.eyelet_row()\n", "t.lua:4: lace.eyelet_row needs a multiple of 2 stitches, at least 4; 2 are live"},
+        BadCall{"flat", 10, "lace.eyelet_row(1.5)\n", "t.lua:4: lace.eyelet_row: rows must be a whole number from 1 up, not 1.5"},
+        BadCall{"round", 18, "lace.feather_and_fan(0)\n",
+                "t.lua:4: lace.feather_and_fan: rows must be a whole number from 1 up, not 0"},
+        BadCall{"round", 20, "lace.feather_and_fan(4)\n",
+                "t.lua:4: lace.feather_and_fan needs a multiple of 18 stitches; 20 are live"}),
+    [](const ::testing::TestParamInfo<BadCall>& param) { return "call" + std::to_string(param.index); });
+
+// ---- require ----
+
+const char* header = "pattern { name = \"m\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.0 } } }\n";
+
+TEST(ModulesRequire, AMissingModuleSaysWhereItLooked) {
+  const std::string message = error_of(std::string(header) + "cast_on(4)\nlocal x = require \"nope\"\n");
+  EXPECT_EQ(message.rfind("t.lua:3: module \"nope\" not found", 0), 0u) << message;
+  EXPECT_NE(message.find((fs::path(KNITC_SOURCE_DIR) / "patterns" / "lib" / "nope.lua").string()), std::string::npos)
+      << message;
+}
+
+TEST(ModulesRequire, NamesThatLeaveTheLibraryAreRefused) {
+  for (const char* name : {"../secret", "a/b", "/etc/passwd", "a..b", ".hidden", "trailing.", "a\\\\b", ""}) {
+    const std::string message = error_of(std::string(header) + "require \"" + name + "\"\n");
+    EXPECT_EQ(message.rfind("t.lua:2: module name \"", 0), 0u) << name << " -> " << message;
+    EXPECT_NE(message.find("must be letters, digits, _ and -, with dots between folders"), std::string::npos) << message;
+  }
+  EXPECT_EQ(error_of(std::string(header) + "require(42)\n"),
+            "t.lua:2: require takes a module name, e.g. require \"cables\"");
+}
+
+// A scratch folder with some files in it.
+fs::path folder_with(const std::string& name, const std::vector<std::pair<std::string, std::string>>& files) {
+  const fs::path dir = test::scratch_dir(name);
+  for (const auto& [path, text] : files) {
+    fs::create_directories((dir / path).parent_path());
+    test::write_text(dir / path, text);
+  }
+  return dir;
+}
+
+TEST(ModulesRequire, AnIncludeFolderWinsOverTheLibrary) {
+  const fs::path first = folder_with("modules-first", {{"ribs.lua", "return { k2p2 = function(n) rows(n, \"k\") end, mine = 1 }\n"},
+                                                       {"sub/deeper.lua", "return { depth = 2 }\n"}});
+  const fs::path second = folder_with("modules-second", {{"ribs.lua", "return { mine = 2 }\n"},
+                                                         {"only_here.lua", "return { here = true }\n"}});
+  runtime::RunOptions options;
+  options.module_dirs = {first.string(), second.string()};
+  const std::string source = std::string(header) +
+                             "local ribs = require \"ribs\"\n"
+                             "assert(ribs.mine == 1, \"the first -I folder should win\")\n"
+                             "assert(require(\"sub.deeper\").depth == 2, \"dots are folders\")\n"
+                             "assert(require(\"only_here\").here, \"later folders are searched too\")\n"
+                             "assert(require(\"cables\").rope, \"the library is still there\")\n"
+                             "cast_on(12)\nribs.k2p2(3)\n";
+  const Pattern p = runtime::run_pattern(source, "t.lua", options).pattern;
+  EXPECT_EQ(p, run("round", 12, "rows(3, \"k\")"));
+  fs::remove_all(first);
+  fs::remove_all(second);
+}
+
+TEST(ModulesRequire, ThePatternsOwnLibFolderIsSearched) {
+  const fs::path dir = folder_with(
+      "modules-own-lib",
+      {{"lib/stripes.lua", "return { band = function(n) rows(n, \"p\") end }\n"},
+       {"lib/ribs.lua", "return { own = true }\n"},
+       {"lib/trims/edge.lua", "return { edge = function() row \"k1, p1\" end }\n"},
+       {"scarf.lua", std::string(header) +
+                         "local stripes = require \"stripes\"\n"
+                         "assert(require(\"ribs\").own, \"the pattern's lib/ wins over knitc's library\")\n"
+                         "cast_on(6)\nstripes.band(2)\nrequire(\"trims.edge\").edge()\n"}});
+  const Pattern p = runtime::run_pattern_file((dir / "scarf.lua").string()).pattern;
+  EXPECT_EQ(p, run("round", 6, "rows(2, \"p\") row \"k1, p1\""));
+  // -I folders come before the pattern's lib/.
+  const fs::path include = folder_with("modules-include", {{"stripes.lua", "return { band = function(n) rows(n, \"k\") end }\n"}});
+  runtime::RunOptions options;
+  options.module_dirs = {include.string()};
+  EXPECT_EQ(runtime::run_pattern_file((dir / "scarf.lua").string(), options).pattern,
+            run("round", 6, "rows(2, \"k\") row \"k1, p1\""));
+  // A script elsewhere does not see that lib/.
+  const fs::path elsewhere = test::scratch_dir("modules-elsewhere");
+  const std::string message = error_of(std::string(header) + "require \"stripes\"\n", (elsewhere / "other.lua").string());
+  EXPECT_NE(message.find("module \"stripes\" not found"), std::string::npos) << message;
+  fs::remove_all(elsewhere);
+  fs::remove_all(dir);
+  fs::remove_all(include);
+}
+
+TEST(ModulesRequire, AModuleRunsOnceAndRequireReturnsItsValue) {
+  const fs::path dir = folder_with("modules-once", {{"counted.lua", "counter = (counter or 0) + 1\nreturn { n = counter }\n"},
+                                                    {"silent.lua", "loaded_silent = true\n"}});
+  runtime::RunOptions options;
+  options.module_dirs = {dir.string()};
+  const std::string source = std::string(header) +
+                             "local a = require \"counted\"\nlocal b = require \"counted\"\n"
+                             "assert(a == b and a.n == 1, \"the same table both times\")\n"
+                             "assert(require \"silent\" == true and loaded_silent, \"a module returning nothing gives true\")\n"
+                             "cast_on(4)\nrows(counter, \"k\")\n";
+  EXPECT_EQ(runtime::run_pattern(source, "t.lua", options).pattern.courses.size(), 1u);
+  fs::remove_all(dir);
+}
+
+TEST(ModulesRequire, AModuleThatRequiresItselfIsAClearError) {
+  const fs::path dir = folder_with("modules-cycle", {{"selfish.lua", "local me = require \"selfish\"\nreturn {}\n"},
+                                                     {"ping.lua", "require \"pong\"\nreturn {}\n"},
+                                                     {"pong.lua", "require \"ping\"\nreturn {}\n"}});
+  runtime::RunOptions options;
+  options.module_dirs = {dir.string()};
+  for (const char* name : {"selfish", "ping"}) {
+    const std::string message = error_of(std::string(header) + "cast_on(4)\nrequire \"" + name + "\"\n", "t.lua", options);
+    EXPECT_NE(message.find("requires itself, directly or through others"), std::string::npos) << message;
+    EXPECT_NE(message.find(".lua:1: module \""), std::string::npos) << message;  // the module's own line
+    EXPECT_NE(message.find("(called from t.lua:3)"), std::string::npos) << message;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(ModulesRequire, AModuleCannotReachFilesOrTheSystem) {
+  const fs::path dir = folder_with(
+      "modules-sandbox",
+      {{"peek.lua", "return { io = io, os = os, debug = debug, package = package, dofile = dofile, loadfile = loadfile }\n"},
+       {"sneaky.lua", "local f = io.open(\"/etc/passwd\")\nreturn {}\n"},
+       {"clock.lua", "return { now = function() return os.time() end }\n"}});
+  runtime::RunOptions options;
+  options.module_dirs = {dir.string()};
+  const std::string start = std::string(header) + "cast_on(4)\nrow \"k\"\n";
+  EXPECT_EQ(error_of(start + "for _, name in ipairs { \"io\", \"os\", \"debug\", \"package\", \"dofile\", \"loadfile\" } do\n"
+                             "  assert(require(\"peek\")[name] == nil, name)\nend\n",
+                     "t.lua", options),
+            "");
+  const std::string io = error_of(start + "require \"sneaky\"\n", "t.lua", options);
+  EXPECT_NE(io.find("sneaky.lua:1: attempt to index a nil value (global 'io')"), std::string::npos) << io;
+  const std::string os = error_of(start + "require(\"clock\").now()\n", "t.lua", options);
+  EXPECT_NE(os.find("clock.lua:1: attempt to index a nil value (global 'os')"), std::string::npos) << os;
+  fs::remove_all(dir);
+}
+
+TEST(ModulesRequire, AVerbFailingInAModuleNamesThePatternLineToo) {
+  const fs::path dir = folder_with("modules-verb", {{"bad.lua", "return { go = function()\n  row \"k3\"\nend }\n"}});
+  runtime::RunOptions options;
+  options.module_dirs = {dir.string()};
+  const std::string message =
+      error_of(std::string(header) + "local bad = require \"bad\"\ncast_on(4)\nbad.go()\n", "t.lua", options);
+  EXPECT_EQ(message.rfind((dir / "bad.lua").string() + ":2: ", 0), 0u) << message;
+  EXPECT_NE(message.find("(called from t.lua:4)"), std::string::npos) << message;
+  fs::remove_all(dir);
+}
+
+TEST(ModulesRequire, AModuleThatFailedToLoadFailsAgainWithItsOwnError) {
+  const fs::path dir = folder_with("modules-broken", {{"broken.lua", "error(\"broken on purpose\")\n"}});
+  runtime::RunOptions options;
+  options.module_dirs = {dir.string()};
+  const std::string message = error_of(
+      std::string(header) + "local ok = pcall(require, \"broken\")\nassert(not ok)\nrequire \"broken\"\n", "t.lua", options);
+  EXPECT_NE(message.find("broken.lua:1: broken on purpose"), std::string::npos) << message;
+  fs::remove_all(dir);
+}
+
+TEST(ModulesRequire, RowsWorkedByALibraryFunctionAreLocatedAtThePatternsLine) {
+  const fs::path dir = folder_with("modules-where", {{"knit.lua", "return { go = function()\n  row \"k\"\nend }\n"}});
+  runtime::RunOptions options;
+  options.module_dirs = {dir.string()};
+  const auto result = runtime::run_pattern(std::string(header) + "local m = require \"knit\"\ncast_on(4)\nm.go()\n", "t.lua", options);
+  ASSERT_EQ(result.pattern.courses.size(), 1u);
+  EXPECT_EQ(result.pattern.courses[0].where.file, "t.lua");
+  EXPECT_EQ(result.pattern.courses[0].where.line, 4);
+  fs::remove_all(dir);
+}
+
+// ---- the example patterns ----
+
+TEST(ModulesExamples, ThePatternsUsingTheLibraryRun) {
+  for (const char* name : {"rib", "seed", "cable_panel"}) {
+    const auto path = fs::path(KNITC_SOURCE_DIR) / "patterns" / (std::string(name) + ".lua");
+    const Pattern p = runtime::run_pattern_file(path.string()).pattern;
+    EXPECT_LE(p.cast_on, 30) << name;
+    EXPECT_LE(p.courses.size(), 30u) << name;
+    EXPECT_TRUE(p.bound_off) << name;
+    for (const auto& c : p.courses) EXPECT_EQ(produced(c), p.cast_on) << name;
+  }
+}
+
+}  // namespace
+}  // namespace knitc
