@@ -52,14 +52,14 @@ void work_written(lua_State* L, const language::RowText& text, const std::string
   if (auto* e = std::get_if<language::TextError>(&worked)) fail(L, e->message);
   auto ops = language::face_view(std::get<std::vector<language::Worked>>(worked), side_of(s, row), s.current_yarn);
   if (auto* e = std::get_if<language::TextError>(&ops))
-    fail(L, "row " + std::to_string(row) + " \"" + source + "\" is a wrong-side row: " + e->message);
+    fail(L, "row " + std::to_string(row) + " " + language::quote_row(source) + " is a wrong-side row: " + e->message);
   add_course(L, std::move(std::get<std::vector<Op>>(ops)), line);
 }
 
 language::RowText parse_written(lua_State* L, const std::string& text) {
   auto parsed = language::parse_row(text, script_of(L).yarn_ids);
   if (auto* e = std::get_if<language::TextError>(&parsed))
-    fail(L, "row " + std::to_string(next_row(script_of(L))) + " \"" + text + "\": " + e->message);
+    fail(L, "row " + std::to_string(next_row(script_of(L))) + " " + language::quote_row(text) + ": " + e->message);
   return std::get<language::RowText>(std::move(parsed));
 }
 

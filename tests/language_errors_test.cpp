@@ -17,6 +17,13 @@ struct BadScript {
 void PrintTo(const BadScript& script, std::ostream* os) { *os << script.name; }
 
 const BadScript catalogue[] = {
+    {"row_too_many_stitches",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } } }\ncast_on(2000)\nrow \"(yo) x100000, k\"\n",
+     "t.lua:3: row 1 \"(yo) x100000, k\" makes more stitches than any row can hold"},
+    {"groups_too_deep",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } } }\ncast_on(2)\n"
+     "row \"((((((((((((((((((k))))))))))))))))))\"\n",
+     "t.lua:3: row 1 \"((((((((((((((((((k))))))))))))))))))\": groups nested more than 16 deep"},
     {"no_yarns",
      "pattern { gauge = { stitches = 20, rows = 30 } }\ncast_on(4)\nrow \"k\"\n",
      "t.lua:1: pattern{} needs yarns, e.g. yarns = { A = { diameter = 1.0, color = \"#d9c8a9\" } }"},

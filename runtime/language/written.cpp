@@ -155,10 +155,16 @@ class Parser {
       const Token& t = peek();
       if (t.kind == Kind::comma) { next(); continue; }
       if (t.kind == Kind::open) {
+        if (depth_ >= max_depth) {
+          fail("groups nested more than " + std::to_string(max_depth) + " deep");
+          break;
+        }
         next();
+        ++depth_;
         Element group;
         group.is_group = true;
         group.body = sequence();
+        --depth_;
         if (error_) break;
         if (peek().kind != Kind::close) {
           fail(std::string("'") + t.bracket + "' is never closed");
@@ -274,6 +280,8 @@ class Parser {
   std::vector<Token> tokens_;
   std::span<const std::string> yarns_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
+  static constexpr int max_depth = 16;  // knitters nest two or three; the bound keeps recursion shallow
   std::optional<TextError> error_;
 };
 
@@ -294,6 +302,12 @@ std::string over_or_short(int left) {
 }
 
 }  // namespace
+
+std::string quote_row(std::string_view text) {
+  constexpr std::size_t longest = 60;
+  if (text.size() <= longest) return "\"" + std::string(text) + "\"";
+  return "\"" + std::string(text.substr(0, longest)) + "...\"";
+}
 
 std::variant<RowText, TextError> parse_row(std::string_view text, std::span<const std::string> yarn_ids) {
   return Parser(text, yarn_ids).row();
@@ -336,7 +350,7 @@ std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::
   flatten(text.before, before, limit);
   if (text.star) flatten(*text.star, star, limit);
   flatten(text.after, after, limit);
-  const std::string name = "row " + std::to_string(row) + " \"" + std::string(source) + "\"";
+  const std::string name = "row " + std::to_string(row) + " " + quote_row(source);
   if (before.size() > limit || star.size() > limit || after.size() > limit)
     return TextError{name + " is longer than any row can be"};
 
@@ -359,6 +373,7 @@ std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::
                        " live stitches (" + over_or_short(live % unit) + "); make the count a multiple of " +
                        std::to_string(unit) + " or end the row with fixed stitches (*...; rep from * to last " +
                        sts(live % unit) + ", ...)"};
+    if (before.size() * static_cast<std::size_t>(live / unit) > limit) return TextError{name + " makes more stitches than any row can hold"};
     std::vector<Worked> out;
     out.reserve(before.size() * (live / unit));
     for (int i = 0; i < live / unit; ++i) out.insert(out.end(), before.begin(), before.end());
@@ -383,6 +398,8 @@ std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::
     return TextError{name + ": the *repeat of " + stitches(b) + " does not fit the " + std::to_string(room) +
                      " stitches between the fixed ones (" + over_or_short(room % b) +
                      "); change the repeat or the fixed stitches"};
+  if (before.size() + after.size() + star.size() * static_cast<std::size_t>(room / b) > limit)
+    return TextError{name + " makes more stitches than any row can hold"};
   std::vector<Worked> out(before);
   for (int i = 0; i < room / b; ++i) out.insert(out.end(), star.begin(), star.end());
   out.insert(out.end(), after.begin(), after.end());
