@@ -3,12 +3,41 @@
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace knitc {
 
 sweep::FrameKind frame_kind(yarn_paths::LoopModel model) {
   return model == yarn_paths::LoopModel::paper ? sweep::FrameKind::frenet
                                                : sweep::FrameKind::rotation_minimising;
+}
+
+Density density(Quality quality) {
+  switch (quality) {
+    case Quality::draft: return {6, 0.05};
+    case Quality::normal: return {12, 0.01};
+    case Quality::fine: return {24, 0.0025};
+  }
+  return {12, 0.01};
+}
+
+sweep::CrossSection cross_section(const Yarn& yarn) {
+  sweep::CrossSection c;
+  c.radius = 0.5 * yarn.diameter;
+  switch (yarn.section) {
+    case Section::circle: c.shape = sweep::CrossSection::Shape::circle; break;
+    case Section::ellipse:
+      c.shape = sweep::CrossSection::Shape::ellipse;
+      c.aspect = yarn.aspect;
+      c.flat_normal = {0.0, 0.0, 1.0};  // pressed flat in the fabric's plane
+      break;
+    case Section::plied:
+      c.shape = sweep::CrossSection::Shape::plied;
+      c.plies = yarn.plies;
+      c.twist = (yarn.z_twist ? 1.0 : -1.0) * yarn.twist / 100.0;  // turns per mm
+      break;
+  }
+  return c;
 }
 
 glm::vec3 linear_rgb(const std::string& hex) {
@@ -31,17 +60,24 @@ CurvePiece trace_curve(yarn_paths::Piece path, const Pattern& pattern, const Com
   piece.curve = nurbs::interpolate(piece.path.data_points, io);
 
   // Sample loop by loop, so every loop join is a sample and each loop owns its samples.
-  const double d = pattern.yarns[piece.path.yarn].diameter;
+  const Yarn& yarn = pattern.yarns[piece.path.yarn];
+  const double d = yarn.diameter;
   const double tolerance = options.chord_tolerance * d;
+  // A twisted ply needs samples along its helix even where the centreline is straight.
+  const double max_step = yarn.section == Section::plied && yarn.twist > 0.0 ? (100.0 / yarn.twist) / 12.0
+                                                                             : std::numeric_limits<double>::infinity();
   const auto& u = piece.curve.parameters;
   piece.loop_samples.push_back(0);
   for (std::size_t j = 0; j < piece.path.loops.size(); ++j) {
     const double u0 = u[j * yarn_paths::points_per_loop], u1 = u[(j + 1) * yarn_paths::points_per_loop];
-    const auto s = sweep::sample_parameters(piece.curve.curve, u0, u1, tolerance, 0.5 * d);
+    const auto s = sweep::sample_parameters(piece.curve.curve, u0, u1, tolerance, 0.5 * d, max_step);
     piece.samples.insert(piece.samples.end(), s.begin() + (j == 0 ? 0 : 1), s.end());
     piece.loop_samples.push_back(piece.samples.size() - 1);
   }
   piece.frames = sweep::frames(piece.curve.curve, piece.samples, frame_kind(options.loop_model));
+  piece.arc_length.assign(piece.samples.size(), 0.0);
+  for (std::size_t i = 1; i < piece.samples.size(); ++i)
+    piece.arc_length[i] = piece.arc_length[i - 1] + nurbs::arc_length(piece.curve.curve, piece.samples[i - 1], piece.samples[i]);
   return piece;
 }
 
@@ -62,7 +98,8 @@ mesh::Mesh build_mesh(const Pattern& pattern, const std::vector<CurvePiece>& pie
   for (std::size_t y = 0; y < pattern.yarns.size(); ++y) {
     if (material_of[y] < 0) continue;
     material_of[y] = static_cast<int>(out.materials.size());
-    out.materials.push_back({pattern.yarns[y].id, linear_rgb(pattern.yarns[y].color)});
+    const glm::vec3 colour = linear_rgb(pattern.yarns[y].color);
+    out.materials.push_back({pattern.yarns[y].id, colour, colour, 0.5f});
   }
   const mesh::Mode mode = primitive_mode(options.view);
   if (mode == mesh::Mode::line_strip) {
@@ -85,9 +122,12 @@ mesh::Mesh build_mesh(const Pattern& pattern, const std::vector<CurvePiece>& pie
     mesh::Primitive& prim = by_yarn[p.path.yarn];
     prim.material = material_of[p.path.yarn];
     prim.mode = mode;
-    const double radius = 0.5 * pattern.yarns[p.path.yarn].diameter;
-    if (mode == mesh::Mode::triangles) sweep::append_tube(p.frames, radius, options.sides, prim);
-    else sweep::append_wireframe(p.frames, radius, options.sides, prim);
+    const Yarn& yarn = pattern.yarns[p.path.yarn];
+    const auto strands = sweep::strands(p.frames, p.arc_length, cross_section(yarn));
+    // A ply is a fraction of the yarn's width: about half the sides do.
+    const int sides = yarn.section == Section::plied ? std::max(5, (options.sides + 1) / 2) : options.sides;
+    if (mode == mesh::Mode::triangles) sweep::append_tubes(strands, p.arc_length, sides, prim);
+    else sweep::append_wireframe(strands, sides, prim);
   }
   for (auto& prim : by_yarn) {
     if (!prim.indices.empty()) out.primitives.push_back(std::move(prim));

@@ -20,11 +20,20 @@ enum class View {
   centreline,  // the sampled centrelines, one line strip per yarn piece (Figure 6)
 };
 
+// Mesh density: vertices around each ring, and the chord error of the surface along
+// the yarn as a fraction of the yarn's diameter.
+enum class Quality { draft, normal, fine };
+struct Density {
+  int sides;
+  double chord_tolerance;
+};
+Density density(Quality quality);  // draft: 6, 5%; normal: 12, 1%; fine: 24, 0.25%
+
 struct CompileOptions {
   yarn_paths::LoopModel loop_model = yarn_paths::LoopModel::smooth;
   nurbs::Parametrisation parametrisation = nurbs::Parametrisation::chord_length;
   View view = View::surface;
-  int sides = 12;                 // vertices per tube ring, >= 3
+  int sides = 12;                 // vertices per tube ring, >= 3 (plies get about half, at least 5)
   double chord_tolerance = 0.01;  // as a fraction of the yarn diameter, > 0
 };
 
@@ -34,6 +43,7 @@ struct CurvePiece {
   nurbs::Interpolant curve;
   std::vector<double> samples;  // curve parameters, increasing
   sweep::Frames frames;         // one per sample; frames.origin are the centreline samples
+  std::vector<double> arc_length;  // the yarn's length in mm from the piece's start, per sample
   // Loop j of the piece owns samples [loop_samples[j], loop_samples[j + 1]] (both ends:
   // loops that meet share their join sample). Size: path.loops.size() + 1.
   std::vector<std::size_t> loop_samples;
@@ -58,6 +68,9 @@ class CompileError : public std::runtime_error {
 // Compiles a validated pattern (the runtime validates) into geometry. Throws
 // CompileError for stitches the layout has no template for yet.
 Fabric compile(const Pattern& pattern, const CompileOptions& options);
+
+// How a yarn's cross-section is swept.
+sweep::CrossSection cross_section(const Yarn& yarn);
 
 // "#rrggbb" to linear RGB in [0, 1] (the sRGB transfer function undone), as glTF's
 // baseColorFactor wants. The string must be valid: the runtime checks it.

@@ -26,10 +26,22 @@ struct Gauge {
   bool operator==(const Gauge&) const = default;
 };
 
+// How a yarn's cross-section is drawn.
+enum class Section {
+  circle,   // a round yarn of the yarn's diameter
+  ellipse,  // a flattened yarn: the same area, minor/major = aspect, flat against the fabric
+  plied,    // `plies` round plies twisted about the centreline, the bundle as wide as the yarn
+};
+
 struct Yarn {
   std::string id;         // the name the script gives it, e.g. "A"
   double diameter = 1.0;  // mm
   std::string color;      // CSS hex, "#rrggbb"
+  Section section = Section::circle;
+  double aspect = 1.0;    // ellipse: minor / major, in (0, 1]
+  int plies = 1;          // plied: 2 to 6
+  double twist = 0.0;     // plied: turns per 10 cm
+  bool z_twist = false;   // plied: Z twist (plies slant like the middle of a Z), else S
   bool operator==(const Yarn&) const = default;
 };
 

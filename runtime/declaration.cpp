@@ -83,6 +83,36 @@ bool is_identifier(const std::string& s) {
   return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
 }
 
+// section = "circle" | "ellipse" (aspect) | "plied" (plies, twist, direction)
+void read_section(lua_State* L, int t, const std::string& name, Yarn& y) {
+  const std::string section = string_field(L, t, name, "section").value_or("circle");
+  const auto aspect = number_field(L, t, name, "aspect");
+  const auto twist = number_field(L, t, name, "twist");
+  const auto direction = string_field(L, t, name, "direction");
+  lua_getfield(L, t, "plies");
+  const bool has_plies = !lua_isnil(L, -1);
+  if (has_plies) y.plies = static_cast<int>(whole_number(L, lua_gettop(L), name + ".plies", 2, 6));
+  lua_pop(L, 1);
+  if (section == "circle") {
+    y.section = Section::circle;
+  } else if (section == "ellipse") {
+    y.section = Section::ellipse;
+    y.aspect = aspect ? in_range(L, *aspect, name + ".aspect", 0.1, 1.0, "") : 0.7;
+  } else if (section == "plied") {
+    y.section = Section::plied;
+    if (!has_plies) y.plies = 2;
+    y.twist = twist ? in_range(L, *twist, name + ".twist", 0.0, 200.0, " turns per 10 cm") : 15.0;
+    const std::string d = direction.value_or("S");
+    if (d != "S" && d != "Z" && d != "s" && d != "z") fail(L, name + ".direction is \"" + d + "\"; give \"S\" or \"Z\"");
+    y.z_twist = d == "Z" || d == "z";
+  } else {
+    fail(L, name + ".section is \"" + section + "\"; give \"circle\", \"ellipse\" or \"plied\"");
+  }
+  if (aspect && y.section != Section::ellipse) fail(L, name + ".aspect is for section = \"ellipse\"");
+  if ((has_plies || twist || direction) && y.section != Section::plied)
+    fail(L, name + ".plies, twist and direction are for section = \"plied\"");
+}
+
 void read_yarns(lua_State* L, int index, Pattern& p) {
   lua_getfield(L, index, "yarns");
   if (!lua_istable(L, -1))
@@ -95,7 +125,7 @@ void read_yarns(lua_State* L, int index, Pattern& p) {
     if (!lua_istable(L, -1)) fail(L, "yarns." + id + " must be a table such as { diameter = 1.0, color = \"#d9c8a9\" }");
     const int t = lua_gettop(L);
     const std::string name = "yarns." + id;
-    only_known_keys(L, t, name, {"diameter", "weight", "color"});
+    only_known_keys(L, t, name, {"diameter", "weight", "color", "section", "aspect", "plies", "twist", "direction"});
     Yarn y;
     y.id = id;
     const auto d = number_field(L, t, name, "diameter");
@@ -114,6 +144,7 @@ void read_yarns(lua_State* L, int index, Pattern& p) {
     const auto hex = normal_hex_color(color);
     if (!hex) fail(L, name + ".color is \"" + color + "\"; give a CSS hex colour such as \"#d9c8a9\"");
     y.color = *hex;
+    read_section(L, t, name, y);
     p.yarns.push_back(y);
     lua_pop(L, 1);
   }

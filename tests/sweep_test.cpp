@@ -145,50 +145,113 @@ TopologyReport topology(const mesh::Primitive& prim) {
   return r;
 }
 
+// A jersey swatch in the given yarn.
+Pattern swatch(const std::string& yarn) {
+  return runtime::run_pattern("pattern { gauge = { loop_width = 4.5, loop_height = 4.8, thickness = 2.4 }, yarns = { A = " +
+                                  yarn + " } }\ncast_on(5)\nrows(4, \"k\")\n",
+                              "t.lua")
+      .pattern;
+}
+
 TEST(Tube, EveryYarnTubeIsClosedTwoManifoldAndFacesOut) {
-  for (const auto model : {LoopModel::smooth, LoopModel::paper}) {
-    CompileOptions o;
-    o.loop_model = model;
-    o.sides = 9;
-    const double d = 1.2, r = 0.5 * d;
-    const Fabric f = compile(test::jersey(5, 4, 4.5, 4.8, 2.4, d), o);
-    ASSERT_EQ(f.mesh.primitives.size(), 1u);
-    // The fabric's primitive is the pieces' tubes one after another.
-    std::size_t vertices = 0, indices = 0;
-    for (const auto& piece : f.pieces) {
-      // Each piece's tube alone (in paper mode neighbouring loops' caps touch, so welding
-      // the whole primitive would join them).
-      mesh::Primitive tube;
-      sweep::append_tube(piece.frames, r, o.sides, tube);
-      vertices += tube.positions.size();
-      indices += tube.indices.size();
-      const TopologyReport t = topology(tube);
-      EXPECT_EQ(t.non_manifold_edges, 0u);
-      EXPECT_EQ(t.inconsistent_edges, 0u);
-      EXPECT_EQ(t.components, 1u);
-      // A sphere topologically: V - E + F = 2.
-      EXPECT_EQ(static_cast<long long>(t.welded_vertices) - static_cast<long long>(t.edges) +
-                    static_cast<long long>(t.triangles), 2);
-      // Outward: the enclosed volume is positive and close to the polygon's area times
-      // the yarn length (a 9-gon holds 9/(2 pi) sin(2 pi / 9) of the circle's area).
-      const double length = nurbs::arc_length(piece.curve.curve, 0.0, 1.0);
-      const double polygon = 9.0 / 2.0 * std::sin(2.0 * std::numbers::pi / 9.0) * r * r;
-      EXPECT_NEAR(t.signed_volume, polygon * length, 0.02 * polygon * length);
+  const std::pair<const char*, int> yarns[] = {
+      {"{ diameter = 1.2 }", 1},
+      {"{ diameter = 1.2, section = \"ellipse\", aspect = 0.5 }", 1},
+      {"{ diameter = 1.2, section = \"plied\", plies = 3, twist = 20, direction = \"Z\" }", 3},
+  };
+  for (const auto& [yarn, strands_per_piece] : yarns) {
+    const Pattern pattern = swatch(yarn);
+    for (const auto model : {LoopModel::smooth, LoopModel::paper}) {
+      SCOPED_TRACE(std::string(yarn) + (model == LoopModel::paper ? " paper" : " smooth"));
+      CompileOptions o;
+      o.loop_model = model;
+      o.sides = 9;
+      const Fabric f = compile(pattern, o);
+      ASSERT_EQ(f.mesh.primitives.size(), 1u);
+      const double r = 0.6;
+      std::size_t vertices = 0, indices = 0;
+      for (const auto& piece : f.pieces) {
+        // Each strand's tube alone (in paper mode neighbouring loops' caps touch, so
+        // welding the whole primitive would join them).
+        const auto strands = sweep::strands(piece.frames, piece.arc_length, cross_section(pattern.yarns[0]));
+        ASSERT_EQ(strands.size(), static_cast<std::size_t>(strands_per_piece));
+        const int sides = strands_per_piece > 1 ? 5 : 9;
+        for (const auto& strand : strands) {
+          mesh::Primitive tube;
+          sweep::append_tubes(std::span(&strand, 1), piece.arc_length, sides, tube);
+          vertices += tube.positions.size();
+          indices += tube.indices.size();
+          const TopologyReport t = topology(tube);
+          EXPECT_EQ(t.non_manifold_edges, 0u);
+          EXPECT_EQ(t.inconsistent_edges, 0u);
+          EXPECT_EQ(t.components, 1u);
+          // A sphere topologically: V - E + F = 2.
+          EXPECT_EQ(static_cast<long long>(t.welded_vertices) - static_cast<long long>(t.edges) +
+                        static_cast<long long>(t.triangles), 2);
+          // Outward: the enclosed volume is positive and close to the polygon's area times
+          // the strand's length (an n-gon in an ellipse of half-axes a, b holds n/2 sin(2 pi/n) a b).
+          double length = 0.0;
+          for (std::size_t i = 1; i < strand.frames.size(); ++i)
+            length += glm::distance(strand.frames.origin[i], strand.frames.origin[i - 1]);
+          const double polygon = sides / 2.0 * std::sin(2.0 * std::numbers::pi / sides) * strand.along_normal * strand.along_binormal;
+          EXPECT_NEAR(t.signed_volume, polygon * length, 0.03 * polygon * length);
+          EXPECT_LE(std::max(strand.along_normal, strand.along_binormal), r / std::sqrt(0.5) + 1e-12);
+        }
+      }
+      const auto& prim = f.mesh.primitives[0];
+      EXPECT_EQ(prim.positions.size(), vertices);
+      EXPECT_EQ(prim.indices.size(), indices);
+      ASSERT_EQ(prim.uvs.size(), prim.positions.size());
+      // Vertex normals are unit and agree with their triangles' winding.
+      for (const auto& n : prim.normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+      std::size_t against = 0;
+      for (std::size_t t = 0; t < prim.indices.size(); t += 3) {
+        const glm::vec3 a = prim.positions[prim.indices[t]], b = prim.positions[prim.indices[t + 1]],
+                        c = prim.positions[prim.indices[t + 2]];
+        const glm::vec3 face = glm::cross(b - a, c - a);
+        for (int k = 0; k < 3; ++k) against += glm::dot(face, prim.normals[prim.indices[t + k]]) <= 0.0f;
+      }
+      EXPECT_EQ(against, 0u);
     }
-    const auto& prim = f.mesh.primitives[0];
-    EXPECT_EQ(prim.positions.size(), vertices);
-    EXPECT_EQ(prim.indices.size(), indices);
-    // Vertex normals are unit and agree with their triangles' winding.
-    for (const auto& n : prim.normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
-    std::size_t against = 0;
-    for (std::size_t t = 0; t < prim.indices.size(); t += 3) {
-      const glm::vec3 a = prim.positions[prim.indices[t]], b = prim.positions[prim.indices[t + 1]],
-                      c = prim.positions[prim.indices[t + 2]];
-      const glm::vec3 face = glm::cross(b - a, c - a);
-      for (int k = 0; k < 3; ++k) against += glm::dot(face, prim.normals[prim.indices[t + k]]) <= 0.0f;
-    }
-    EXPECT_EQ(against, 0u);
   }
+}
+
+TEST(Tube, TextureCoordinatesRunAlongTheYarnInMillimetres) {
+  const Fabric f = compile(swatch("{ diameter = 1 }"), CompileOptions{});
+  const auto& piece = f.pieces[0];
+  EXPECT_EQ(piece.arc_length.front(), 0.0);
+  EXPECT_NEAR(piece.arc_length.back(), nurbs::arc_length(piece.curve.curve, 0.0, 1.0), 1e-9);
+  // u grows with the yarn's length from ring to ring, with no jump at loop joins.
+  const auto& uvs = f.mesh.primitives[0].uvs;
+  const int stride = 13;  // 12 sides and the seam
+  for (std::size_t i = 1; i < piece.frames.size(); ++i) {
+    const float du = uvs[i * stride].x - uvs[(i - 1) * stride].x;
+    EXPECT_GT(du, 0.0f);
+    EXPECT_NEAR(du, glm::distance(piece.frames.origin[i], piece.frames.origin[i - 1]), 0.01);
+    EXPECT_EQ(uvs[i * stride].y, 0.0f);
+    EXPECT_EQ(uvs[i * stride + 12].y, 1.0f);
+  }
+}
+
+TEST(Tube, PliesTwistAsAskedAndStayInsideTheYarn) {
+  const Pattern p = swatch("{ diameter = 1.2, section = \"plied\", plies = 2, twist = 10, direction = \"S\" }");
+  const Fabric f = compile(p, CompileOptions{});
+  const auto& piece = f.pieces[0];
+  const auto strands = sweep::strands(piece.frames, piece.arc_length, cross_section(p.yarns[0]));
+  ASSERT_EQ(strands.size(), 2u);
+  // Two plies of a quarter of the width, their centres a quarter of the width off the axis.
+  EXPECT_NEAR(strands[0].along_normal, 0.3, 1e-12);
+  for (std::size_t i = 0; i < piece.frames.size(); ++i) {
+    const glm::dvec3 off = strands[0].frames.origin[i] - piece.frames.origin[i];
+    EXPECT_NEAR(glm::length(off), 0.3, 1e-9);
+    EXPECT_NEAR(glm::dot(off, piece.frames.tangent[i]), 0.0, 1e-9);
+    // The angle in the rotation-minimising frame turns 10 times per 100 mm, S: clockwise.
+    const double angle = std::atan2(glm::dot(off, piece.frames.binormal[i]), glm::dot(off, piece.frames.normal[i]));
+    const double expected = -2.0 * std::numbers::pi * 0.1 * piece.arc_length[i];
+    EXPECT_NEAR(std::remainder(angle - expected, 2.0 * std::numbers::pi), 0.0, 1e-9);
+  }
+  // Samples come often enough for the helix: 12 per turn at least.
+  for (std::size_t i = 1; i < piece.arc_length.size(); ++i) EXPECT_LE(piece.arc_length[i] - piece.arc_length[i - 1], 10.0 / 12.0 + 1e-6);
 }
 
 TEST(Tube, WireframeHasRingsAndLongEdges) {

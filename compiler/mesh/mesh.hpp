@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace knitc::mesh {
@@ -15,6 +16,8 @@ enum class Mode { triangles, lines, line_strip };
 struct Material {
   std::string name;
   glm::vec3 base_color{1.0f};  // linear RGB in [0, 1]
+  glm::vec3 sheen_color{0.0f}; // linear RGB: the soft rim light of fibres (KHR_materials_sheen)
+  float sheen_roughness = 0.5f;
 };
 
 struct Primitive {
@@ -22,6 +25,7 @@ struct Primitive {
   Mode mode = Mode::triangles;
   std::vector<glm::vec3> positions; // mm
   std::vector<glm::vec3> normals;   // empty, or one per position
+  std::vector<glm::vec2> uvs;       // empty, or one per position: u in mm along the yarn, v around it in [0, 1]
   std::vector<std::uint32_t> indices;
 };
 

@@ -32,6 +32,27 @@ dvec3 principal_normal(const dvec3& d1, const dvec3& d2, const dvec3& t, const d
 
 }  // namespace
 
+void propagate_rotation_minimising(Frames& f) {
+  for (std::size_t i = 0; i + 1 < f.size(); ++i) {
+    // Reflect the frame in the plane bisecting the chord, then in the plane that takes
+    // the reflected tangent onto the next tangent.
+    const dvec3 v1 = f.origin[i + 1] - f.origin[i];
+    const double c1 = glm::dot(v1, v1);
+    dvec3 r = f.normal[i], t = f.tangent[i];
+    if (c1 > 0.0) {
+      r -= (2.0 / c1) * glm::dot(v1, r) * v1;
+      t -= (2.0 / c1) * glm::dot(v1, t) * v1;
+    }
+    const dvec3 v2 = f.tangent[i + 1] - t;
+    const double c2 = glm::dot(v2, v2);
+    if (c2 > 0.0) r -= (2.0 / c2) * glm::dot(v2, r) * v2;
+    // Remove rounding drift so the frame stays orthonormal over long yarns.
+    const dvec3& tn = f.tangent[i + 1];
+    f.normal[i + 1] = glm::normalize(r - glm::dot(r, tn) * tn);
+  }
+  for (std::size_t i = 0; i < f.size(); ++i) f.binormal[i] = glm::cross(f.tangent[i], f.normal[i]);
+}
+
 Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind kind) {
   assert(u.size() >= 2);
   const std::size_t count = u.size();
@@ -52,23 +73,7 @@ Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind ki
   if (kind == FrameKind::rotation_minimising) {
     const auto d = nurbs::derivatives(curve, u[0], 2);
     f.normal[0] = principal_normal(d[1], d[2], f.tangent[0], any_perpendicular(f.tangent[0]));
-    for (std::size_t i = 0; i + 1 < count; ++i) {
-      // Reflect the frame in the plane bisecting the chord, then in the plane that
-      // takes the reflected tangent onto the next tangent.
-      const dvec3 v1 = f.origin[i + 1] - f.origin[i];
-      const double c1 = glm::dot(v1, v1);
-      dvec3 r = f.normal[i], t = f.tangent[i];
-      if (c1 > 0.0) {
-        r -= (2.0 / c1) * glm::dot(v1, r) * v1;
-        t -= (2.0 / c1) * glm::dot(v1, t) * v1;
-      }
-      const dvec3 v2 = f.tangent[i + 1] - t;
-      const double c2 = glm::dot(v2, v2);
-      if (c2 > 0.0) r -= (2.0 / c2) * glm::dot(v2, r) * v2;
-      // Remove rounding drift so the frame stays orthonormal over long yarns.
-      const dvec3& tn = f.tangent[i + 1];
-      f.normal[i + 1] = glm::normalize(r - glm::dot(r, tn) * tn);
-    }
+    propagate_rotation_minimising(f);
   }
   for (std::size_t i = 0; i < count; ++i) f.binormal[i] = glm::cross(f.tangent[i], f.normal[i]);
   return f;

@@ -26,7 +26,7 @@ double cell_length(const nurbs::Curve& c, double a, double b) {
 }  // namespace
 
 std::vector<double> sample_parameters(const nurbs::Curve& c, double u0, double u1,
-                                      double tolerance, double radius) {
+                                      double tolerance, double radius, double max_step) {
   constexpr int cells_per_span = 4;
   constexpr double max_samples = 1 << 22;  // a guard, far above any sane tolerance
   std::vector<Cell> cells;
@@ -39,7 +39,7 @@ std::vector<double> sample_parameters(const nurbs::Curve& c, double u0, double u
       for (double u : {ca, 0.5 * (ca + cb), cb}) k = std::max(k, nurbs::curvature(c, u));
       const double outer = k * (1.0 + radius * k);  // sagitta factor of the outer fibre
       const double step = outer > 0.0 ? std::sqrt(8.0 * tolerance / outer) : INFINITY;
-      cells.push_back({ca, cb, cell_length(c, ca, cb) / step});
+      cells.push_back({ca, cb, cell_length(c, ca, cb) / std::min(step, max_step)});
     }
     a = b;
   };

@@ -2,6 +2,7 @@
 // swept along them into a closed tube. It knows curves and cross-sections, not stitches.
 #pragma once
 
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -16,9 +17,12 @@ namespace knitc::sweep {
 // consecutive samples of the tube's outer surface (radius `radius` around the curve)
 // stay within `chord_tolerance` of the surface: a centreline arc of curvature k and
 // length L has sagitta (1/k + r) (1 - cos(k L / 2)) ~ (1 + r k) k L^2 / 8 on the outer
-// fibre. Samples are equidistributed in that density. chord_tolerance > 0, radius >= 0.
+// fibre; and no two samples further apart than `max_step` along the curve (for twisted
+// plies, whose helices need samples where the centreline is straight). Samples are
+// equidistributed in that density. chord_tolerance > 0, radius >= 0, max_step > 0.
 std::vector<double> sample_parameters(const nurbs::Curve& curve, double u0, double u1,
-                                      double chord_tolerance, double radius);
+                                      double chord_tolerance, double radius,
+                                      double max_step = std::numeric_limits<double>::infinity());
 
 enum class FrameKind {
   frenet,               // tangent, principal normal, binormal: the seed paper's choice
@@ -35,15 +39,45 @@ struct Frames {
 // normal, projected, where the curvature vanishes.
 Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind kind);
 
-// Appends a closed tube to a triangle primitive: a circle of `radius` with `sides`
-// vertices per ring (sides >= 3) at each frame, quads between rings, and a flat cap at
-// each end. Triangles wind counter-clockwise seen from outside; normals point out. The
-// cap's rim vertices repeat the end rings' positions exactly, so welding by position
-// closes the surface.
-void append_tube(const Frames& frames, double radius, int sides, mesh::Primitive& out);
+// Given origins, unit tangents and the first normal, fills the other normals by double
+// reflection and every binormal: the rotation-minimising frame of a polyline.
+void propagate_rotation_minimising(Frames& frames);
 
-// Appends the tube's rings and long edges as a LINES primitive, like the seed paper's
+// A yarn's cross-section, swept along its centreline.
+struct CrossSection {
+  enum class Shape { circle, ellipse, plied } shape = Shape::circle;
+  double radius = 0.5;  // half the yarn's width, mm
+  // ellipse: minor / major; the same area as the circle of `radius`, the minor axis kept
+  // as close to `flat_normal` as the tangent allows (a yarn pressed flat in the fabric).
+  double aspect = 1.0;
+  glm::dvec3 flat_normal{0.0, 0.0, 1.0};
+  // plied: `plies` round plies, touching, the bundle `radius` wide, each turning about
+  // the centreline `twist` times per mm of yarn, in the rotation-minimising frame;
+  // positive is a Z (right-handed) twist, negative S.
+  int plies = 1;
+  double twist = 0.0;
+};
+
+// One tube of a cross-section: its own frames and ring half-axes (along normal, binormal).
+struct Strand {
+  Frames frames;
+  double along_normal = 0.5, along_binormal = 0.5;
+};
+
+// The strands of a cross-section along the frames: one for a circle or an ellipse, one
+// per ply. `arc_length` holds the yarn's length in mm at each frame.
+std::vector<Strand> strands(const Frames& frames, std::span<const double> arc_length, const CrossSection& section);
+
+// Appends each strand as a closed tube to a triangle primitive: rings of `sides` vertices
+// (plus a seam vertex repeating the first, for the texture's v = 1), quads between rings,
+// a flat cap at each end. Triangles wind counter-clockwise seen from outside; normals point
+// out. TEXCOORD u is the yarn's length in mm (`arc_length`), v runs around the section in
+// [0, 1]. The seam and cap rim vertices repeat their ring's positions exactly, so welding
+// by position closes each surface.
+void append_tubes(std::span<const Strand> strands, std::span<const double> arc_length, int sides, mesh::Primitive& out);
+
+// Appends the strands' rings and long edges as a LINES primitive, like the seed paper's
 // wireframe figure.
-void append_wireframe(const Frames& frames, double radius, int sides, mesh::Primitive& out);
+void append_wireframe(std::span<const Strand> strands, int sides, mesh::Primitive& out);
 
 }  // namespace knitc::sweep

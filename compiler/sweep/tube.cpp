@@ -1,3 +1,4 @@
+// Cross-sections swept along frames: round, flattened and plied yarns as closed tubes.
 #include <cassert>
 #include <cmath>
 #include <numbers>
@@ -10,34 +11,89 @@ namespace knitc::sweep {
 
 namespace {
 
-// Ring vertices: position and outward direction for each side at each frame.
-void append_rings(const Frames& f, double radius, int sides, mesh::Primitive& out, bool with_normals) {
+using glm::dvec3;
+
+// Frames whose binormal follows `flat` as closely as each tangent allows: the minor axis
+// of a yarn pressed flat. Where the tangent runs along `flat`, the previous axis is kept.
+Frames flattened(const Frames& f, const dvec3& flat) {
+  Frames out = f;
+  dvec3 previous = f.binormal[0];
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const dvec3& t = f.tangent[i];
+    dvec3 b = flat - glm::dot(flat, t) * t;
+    if (glm::length(b) < 1e-3) b = previous - glm::dot(previous, t) * t;
+    b = glm::normalize(b);
+    out.binormal[i] = b;
+    out.normal[i] = glm::cross(b, t);  // (t, n, b) stays right-handed: b = t x n
+    previous = b;
+  }
+  return out;
+}
+
+// The centre line of ply k of n: a helix about the yarn's centreline at distance
+// `offset`, turning `twist` times per mm in the rotation-minimising frame.
+Frames ply(const Frames& f, std::span<const double> s, int k, int n, double offset, double twist) {
+  Frames p;
+  const std::size_t count = f.size();
+  p.origin.resize(count);
+  p.tangent.resize(count);
+  p.normal.resize(count);
+  p.binormal.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double phi = 2.0 * std::numbers::pi * (static_cast<double>(k) / n + twist * s[i]);
+    p.origin[i] = f.origin[i] + offset * (std::cos(phi) * f.normal[i] + std::sin(phi) * f.binormal[i]);
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t a = i == 0 ? 0 : i - 1, b = i + 1 == count ? i : i + 1;
+    p.tangent[i] = glm::normalize(p.origin[b] - p.origin[a]);
+  }
+  const dvec3 n0 = f.normal[0] - glm::dot(f.normal[0], p.tangent[0]) * p.tangent[0];
+  p.normal[0] = glm::normalize(n0);
+  propagate_rotation_minimising(p);
+  return p;
+}
+
+// One strand's rings: `sides` + 1 vertices each (the last repeats the first, v = 1).
+void append_rings(const Strand& strand, std::span<const double> s, int sides, mesh::Primitive& out, bool surface) {
+  const Frames& f = strand.frames;
   std::vector<double> cosines(sides), sines(sides);
   for (int k = 0; k < sides; ++k) {
     const double theta = 2.0 * std::numbers::pi * k / sides;
     cosines[k] = std::cos(theta);
     sines[k] = std::sin(theta);
   }
+  const double a = strand.along_normal, b = strand.along_binormal;
   for (std::size_t i = 0; i < f.size(); ++i) {
+    const auto first = out.positions.size();
     for (int k = 0; k < sides; ++k) {
-      const glm::dvec3 dir = cosines[k] * f.normal[i] + sines[k] * f.binormal[i];
-      out.positions.emplace_back(f.origin[i] + radius * dir);
-      if (with_normals) out.normals.emplace_back(glm::normalize(glm::vec3(dir)));
+      out.positions.emplace_back(f.origin[i] + a * cosines[k] * f.normal[i] + b * sines[k] * f.binormal[i]);
+      if (!surface) continue;
+      // The ellipse's outward normal is along (cos / a, sin / b), that is (b cos, a sin).
+      out.normals.emplace_back(glm::normalize(glm::vec3(b * cosines[k] * f.normal[i] + a * sines[k] * f.binormal[i])));
+      out.uvs.emplace_back(static_cast<float>(s[i]), static_cast<float>(k) / static_cast<float>(sides));
     }
+    if (!surface) continue;
+    const glm::vec3 seam_position = out.positions[first], seam_normal = out.normals[first];
+    out.positions.push_back(seam_position);
+    out.normals.push_back(seam_normal);
+    out.uvs.emplace_back(static_cast<float>(s[i]), 1.0f);
   }
 }
 
 // A flat cap: a centre vertex and a copy of the ring's rim with the cap's normal.
-void append_cap(const Frames& f, std::size_t ring, std::uint32_t ring_first, int sides, bool at_start,
-                mesh::Primitive& out) {
+void append_cap(const Frames& f, std::size_t ring, std::uint32_t rim, int sides, bool at_start, mesh::Primitive& out) {
   const glm::vec3 normal(at_start ? -f.tangent[ring] : f.tangent[ring]);
   const auto centre = static_cast<std::uint32_t>(out.positions.size());
+  const glm::vec2 centre_uv(out.uvs[rim].x, 0.5f);
   out.positions.emplace_back(f.origin[ring]);
   out.normals.push_back(normal);
+  out.uvs.push_back(centre_uv);
   for (int k = 0; k < sides; ++k) {
-    const glm::vec3 rim = out.positions[ring_first + k];  // a copy: push_back may reallocate
-    out.positions.push_back(rim);
+    const glm::vec3 p = out.positions[rim + k];  // copies: push_back may reallocate
+    const glm::vec2 uv = out.uvs[rim + k];
+    out.positions.push_back(p);
     out.normals.push_back(normal);
+    out.uvs.push_back(uv);
   }
   for (int k = 0; k < sides; ++k) {
     const std::uint32_t a = centre + 1 + k, b = centre + 1 + (k + 1) % sides;
@@ -49,38 +105,65 @@ void append_cap(const Frames& f, std::size_t ring, std::uint32_t ring_first, int
 
 }  // namespace
 
-void append_tube(const Frames& f, double radius, int sides, mesh::Primitive& out) {
-  assert(f.size() >= 2 && sides >= 3 && out.mode == mesh::Mode::triangles);
-  const auto base = static_cast<std::uint32_t>(out.positions.size());
-  const auto rings = f.size();
-  out.positions.reserve(out.positions.size() + rings * sides + 2 * (sides + 1));
-  out.normals.reserve(out.positions.capacity());
-  append_rings(f, radius, sides, out, true);
-  out.indices.reserve(out.indices.size() + (rings - 1) * sides * 6 + 2 * sides * 3);
-  for (std::size_t i = 0; i + 1 < rings; ++i) {
-    const auto row = base + static_cast<std::uint32_t>(i * sides);
-    for (int k = 0; k < sides; ++k) {
-      // (i, k), (i, k+1), (i+1, k), (i+1, k+1): the side direction crossed with the
-      // tangent points outward.
-      const std::uint32_t a = row + k, b = row + (k + 1) % sides;
-      const std::uint32_t c = a + sides, d = b + sides;
-      out.indices.insert(out.indices.end(), {a, b, c, b, d, c});
+std::vector<Strand> strands(const Frames& f, std::span<const double> s, const CrossSection& section) {
+  assert(f.size() == s.size());
+  const double r = section.radius;
+  switch (section.shape) {
+    case CrossSection::Shape::circle: return {Strand{f, r, r}};
+    case CrossSection::Shape::ellipse: {
+      // Same area as the circle: major r / sqrt(aspect) in the fabric, minor r sqrt(aspect) across it.
+      const double root = std::sqrt(section.aspect);
+      return {Strand{flattened(f, section.flat_normal), r / root, r * root}};
+    }
+    case CrossSection::Shape::plied: {
+      const int n = section.plies;
+      // n touching circles around the axis: centres at R = r_p / sin(pi / n), R + r_p = r.
+      const double gap = std::sin(std::numbers::pi / n);
+      const double ply_radius = r / (1.0 + 1.0 / gap), offset = ply_radius / gap;
+      std::vector<Strand> out;
+      for (int k = 0; k < n; ++k) out.push_back({ply(f, s, k, n, offset, section.twist), ply_radius, ply_radius});
+      return out;
     }
   }
-  append_cap(f, 0, base, sides, true, out);
-  append_cap(f, rings - 1, base + static_cast<std::uint32_t>((rings - 1) * sides), sides, false, out);
+  return {};
 }
 
-void append_wireframe(const Frames& f, double radius, int sides, mesh::Primitive& out) {
-  assert(f.size() >= 2 && sides >= 3 && out.mode == mesh::Mode::lines);
-  const auto base = static_cast<std::uint32_t>(out.positions.size());
-  append_rings(f, radius, sides, out, false);
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    const auto row = base + static_cast<std::uint32_t>(i * sides);
-    for (int k = 0; k < sides; ++k) {
-      const std::uint32_t a = row + k;
-      out.indices.insert(out.indices.end(), {a, row + (k + 1) % sides});  // around the ring
-      if (i + 1 < f.size()) out.indices.insert(out.indices.end(), {a, a + sides});  // along
+void append_tubes(std::span<const Strand> strands, std::span<const double> s, int sides, mesh::Primitive& out) {
+  assert(sides >= 3 && out.mode == mesh::Mode::triangles);
+  const int stride = sides + 1;
+  for (const Strand& strand : strands) {
+    const Frames& f = strand.frames;
+    assert(f.size() >= 2 && f.size() == s.size());
+    const auto base = static_cast<std::uint32_t>(out.positions.size());
+    const auto rings = f.size();
+    append_rings(strand, s, sides, out, true);
+    for (std::size_t i = 0; i + 1 < rings; ++i) {
+      const auto row = base + static_cast<std::uint32_t>(i * stride);
+      for (int k = 0; k < sides; ++k) {
+        // (i, k), (i, k+1), (i+1, k), (i+1, k+1): the side direction crossed with the
+        // tangent points outward.
+        const std::uint32_t a = row + k, b = row + k + 1, c = a + stride, d = b + stride;
+        out.indices.insert(out.indices.end(), {a, b, c, b, d, c});
+      }
+    }
+    append_cap(f, 0, base, sides, true, out);
+    append_cap(f, rings - 1, base + static_cast<std::uint32_t>((rings - 1) * stride), sides, false, out);
+  }
+}
+
+void append_wireframe(std::span<const Strand> strands, int sides, mesh::Primitive& out) {
+  assert(sides >= 3 && out.mode == mesh::Mode::lines);
+  for (const Strand& strand : strands) {
+    const Frames& f = strand.frames;
+    const auto base = static_cast<std::uint32_t>(out.positions.size());
+    append_rings(strand, {}, sides, out, false);
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const auto row = base + static_cast<std::uint32_t>(i * sides);
+      for (int k = 0; k < sides; ++k) {
+        const std::uint32_t a = row + k;
+        out.indices.insert(out.indices.end(), {a, row + (k + 1) % sides});  // around the ring
+        if (i + 1 < f.size()) out.indices.insert(out.indices.end(), {a, a + sides});  // along
+      }
     }
   }
 }

@@ -72,6 +72,11 @@ void add_primitive(tinygltf::Model& m, const mesh::Primitive& p) {
     const int view = add_view(m, p.normals.data(), p.normals.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
     prim.attributes["NORMAL"] = add_accessor(m, view, TINYGLTF_COMPONENT_TYPE_FLOAT, p.normals.size(), TINYGLTF_TYPE_VEC3);
   }
+  if (!p.uvs.empty()) {
+    static_assert(sizeof(glm::vec2) == 2 * sizeof(float));
+    const int view = add_view(m, p.uvs.data(), p.uvs.size() * sizeof(glm::vec2), TINYGLTF_TARGET_ARRAY_BUFFER);
+    prim.attributes["TEXCOORD_0"] = add_accessor(m, view, TINYGLTF_COMPONENT_TYPE_FLOAT, p.uvs.size(), TINYGLTF_TYPE_VEC2);
+  }
   const int index_view = add_view(m, p.indices.data(), p.indices.size() * sizeof(std::uint32_t),
                                   TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
   prim.indices = add_accessor(m, index_view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, p.indices.size(), TINYGLTF_TYPE_SCALAR);
@@ -87,12 +92,20 @@ std::string glb(const mesh::Mesh& mesh, const std::string& generator) {
   m.asset.version = "2.0";
   m.asset.generator = generator;
   m.buffers.resize(1);
+  if (!mesh.materials.empty()) m.extensionsUsed.push_back("KHR_materials_sheen");
   for (const mesh::Material& mat : mesh.materials) {
     tinygltf::Material g;
     g.name = mat.name;
     g.pbrMetallicRoughness.baseColorFactor = {mat.base_color.r, mat.base_color.g, mat.base_color.b, 1.0};
     g.pbrMetallicRoughness.metallicFactor = 0.0;  // yarn is a dielectric
     g.pbrMetallicRoughness.roughnessFactor = 0.85;
+    // Fibres scatter light at grazing angles: the soft rim of cloth.
+    tinygltf::Value::Object sheen;
+    sheen["sheenColorFactor"] = tinygltf::Value(tinygltf::Value::Array{
+        tinygltf::Value(static_cast<double>(mat.sheen_color.r)), tinygltf::Value(static_cast<double>(mat.sheen_color.g)),
+        tinygltf::Value(static_cast<double>(mat.sheen_color.b))});
+    sheen["sheenRoughnessFactor"] = tinygltf::Value(static_cast<double>(mat.sheen_roughness));
+    g.extensions["KHR_materials_sheen"] = tinygltf::Value(sheen);
     m.materials.push_back(g);
   }
   m.meshes.resize(1);
