@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -29,6 +30,7 @@ struct Args {
   knitc::CompileOptions compile;
   knitc::render::RenderOptions render;
   std::string size = "960x720";
+  std::optional<knitc::Quality> quality;
   bool stats = false;
   bool quiet = false;
 };
@@ -175,9 +177,14 @@ void add_compile_options(CLI::App* cmd, Args& a) {
       {"centripetal", knitc::nurbs::Parametrisation::centripetal}};
   cmd->add_option("--parameters", a.compile.parametrisation, "data point parameters: chord (default) or centripetal")
       ->transform(CLI::CheckedTransformer(params, CLI::ignore_case));
-  cmd->add_option("--sides", a.compile.sides, "vertices around each tube ring (default 12)")->check(CLI::Range(3, 256));
+  const std::map<std::string, knitc::Quality> qualities{
+      {"draft", knitc::Quality::draft}, {"normal", knitc::Quality::normal}, {"fine", knitc::Quality::fine}};
+  cmd->add_option("--quality", a.quality,
+                  "mesh density: draft (6 sides, 5% chord error), normal (12, 1%: the default), fine (24, 0.25%)")
+      ->transform(CLI::CheckedTransformer(qualities, CLI::ignore_case));
+  cmd->add_option("--sides", a.compile.sides, "vertices around each tube ring, over --quality's")->check(CLI::Range(3, 256));
   cmd->add_option("--tolerance", a.compile.chord_tolerance,
-                  "chord error of the tube surface, as a fraction of the yarn diameter (default 0.01)")
+                  "chord error of the tube surface as a fraction of the yarn diameter, over --quality's")
       ->check(CLI::Range(1e-4, 1.0));
   cmd->add_flag("--stats", a.stats, "print counts and bounds of the result");
 }
@@ -230,6 +237,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return exit_usage;
+  }
+  // --quality sets the density; --sides and --tolerance, when given, win over it.
+  for (auto [cmd, args] : {std::pair{build_cmd, &b}, std::pair{render_cmd, &r}}) {
+    if (!cmd->parsed() || !args->quality) continue;
+    const knitc::Density d = knitc::density(*args->quality);
+    if (cmd->get_option("--sides")->count() == 0) args->compile.sides = d.sides;
+    if (cmd->get_option("--tolerance")->count() == 0) args->compile.chord_tolerance = d.chord_tolerance;
   }
   if (build_cmd->parsed()) {
     if (!b.centreline.empty() && b.centreline == b.output) {

@@ -317,7 +317,9 @@ constexpr Verb verbs[] = {
     {"pattern", pattern_verb, "pattern { name = S, gauge = {...}, yarns = {...}, knitting = \"round\"|\"flat\", seed = N }",
      "Declares the pattern, once, before anything else. gauge: { stitches = S, rows = R } per 10 cm, or "
      "{ loop_width = W, loop_height = H } in mm, either with an optional thickness in mm (default two yarn diameters). "
-     "yarns: a table of named yarns, each { diameter = mm } or { weight = name }, and color = \"#rrggbb\". "
+     "yarns: a table of named yarns, each { diameter = mm } or { weight = name }, and color = \"#rrggbb\"; "
+     "section = \"circle\" (default), \"ellipse\" (aspect = minor/major, default 0.7: a yarn pressed flat) or "
+     "\"plied\" (plies = 2 to 6, default 2; twist = turns per 10 cm, default 15; direction = \"S\" (default) or \"Z\"). "
      "knitting: \"round\" (default: every row is worked from the right side) or \"flat\" (even rows are wrong-side rows). "
      "seed: math.random's seed (default 0; --seed overrides).",
      "pattern { name = \"rib\", gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = \"dk\", color = \"#8a1c2b\" } } }"},

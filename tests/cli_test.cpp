@@ -36,6 +36,34 @@ TEST(Cli, BuildsTheDefaultPatternInEveryViewAndLoopModel) {
   }
 }
 
+TEST(Cli, BuildsEllipticalAndPliedYarnsAtEveryQuality) {
+  const fs::path dir = test::glb_dir();
+  const fs::path src = test::scratch_dir("sections");
+  test::write_text(src / "sections.lua",
+                   "pattern { gauge = { stitches = 22, rows = 30 }, yarns = {\n"
+                   "  A = { weight = \"dk\", color = \"#b5523b\", section = \"plied\", plies = 3, twist = 20, direction = \"Z\" },\n"
+                   "  B = { weight = \"dk\", color = \"#3b7fb5\", section = \"ellipse\", aspect = 0.5 } } }\n"
+                   "cast_on(6)\nrows(2, \"k\")\nyarn \"B\"\nrows(2, \"k2, p2\")\n");
+  std::size_t previous = 0;
+  for (const char* quality : {"draft", "normal", "fine"}) {
+    const fs::path out = dir / (std::string("sections-") + quality + ".glb");
+    const auto r = test::run_knitc("build " + quoted(src / "sections.lua") + " -q --quality " + quality + " -o " + quoted(out));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto size = fs::file_size(out);
+    EXPECT_GT(size, previous) << quality;  // finer is bigger
+    previous = size;
+    EXPECT_NE(test::read_text(out).find("KHR_materials_sheen"), std::string::npos);
+  }
+  // --sides wins over --quality.
+  const auto a = test::run_knitc("build " + quoted(src / "sections.lua") + " -q --quality fine --sides 4 -o " + quoted(src / "a.glb"));
+  const auto b = test::run_knitc("build " + quoted(src / "sections.lua") + " -q --tolerance 0.0025 --sides 4 -o " + quoted(src / "b.glb"));
+  ASSERT_EQ(a.exit_code, 0);
+  ASSERT_EQ(b.exit_code, 0);
+  EXPECT_EQ(test::read_text(src / "a.glb"), test::read_text(src / "b.glb"));
+  EXPECT_EQ(test::run_knitc("build patterns/jersey.lua -o " + quoted(src / "c.glb") + " --quality ultra").exit_code, 2);
+  fs::remove_all(src);
+}
+
 TEST(Cli, WritesTheCentrelineJson) {
   const fs::path dir = test::scratch_dir("json");
   const auto r = test::run_knitc("build patterns/jersey.lua -q -o " + quoted(dir / "j.glb") + " --loop-model paper --centreline " +
