@@ -202,7 +202,7 @@ TEST(Metadata, WeightsAndSeeds) {
 
 TEST(Reference, DocsAreGeneratedFromTheTables) {
   const std::string docs = test::read_text(std::filesystem::path(KNITC_SOURCE_DIR) / "docs/language.md");
-  EXPECT_EQ(docs, runtime::language_reference())
+  EXPECT_TRUE(docs == runtime::language_reference())
       << "docs/language.md is stale: run ./build/cli/knitc reference > docs/language.md";
   for (const StitchDef& s : stitch_table()) EXPECT_NE(docs.find(std::string(s.name)), std::string::npos) << s.name;
 }
