@@ -128,6 +128,20 @@ int render(const Args& args) {
   return 0;
 }
 
+int snapshot(const Args& args) {
+  auto loaded = load(args);
+  if (const int* code = std::get_if<int>(&loaded)) return *code;
+  const auto& pattern = std::get<knitc::Pattern>(loaded);
+  auto compiled = compile(pattern, args);
+  if (const int* code = std::get_if<int>(&compiled)) return *code;
+  const std::string text = knitc::writers::snapshot(pattern, std::get<knitc::Fabric>(compiled));
+  if (args.output.empty()) {
+    fmt::print("{}", text);
+    return 0;
+  }
+  return write({{args.output, text}});
+}
+
 int chart(const Args& args) {
   auto loaded = load(args);
   if (const int* code = std::get_if<int>(&loaded)) return *code;
@@ -187,6 +201,8 @@ void add_compile_options(CLI::App* cmd, Args& a) {
                   "chord error of the tube surface as a fraction of the yarn diameter, over --quality's")
       ->check(CLI::Range(1e-4, 1.0));
   cmd->add_flag("--stats", a.stats, "print counts and bounds of the result");
+  cmd->add_option("--threads", a.compile.threads, "threads to use (default: every core); the output is the same for any")
+      ->check(CLI::Range(1, 256));
 }
 
 }  // namespace
@@ -216,6 +232,12 @@ int main(int argc, char** argv) {
       ->transform(CLI::CheckedTransformer(sides, CLI::ignore_case));
   add_compile_options(render_cmd, r);
 
+  Args n;
+  auto* snapshot_cmd = app.add_subcommand("snapshot", "print a stable summary of the compiled mesh, for snapshot tests");
+  add_pattern_options(snapshot_cmd, n);
+  snapshot_cmd->add_option("-o,--output", n.output, "write it to this file instead of standard output");
+  add_compile_options(snapshot_cmd, n);
+
   Args c;
   auto* chart_cmd = app.add_subcommand("chart", "print the pattern's stitch chart as text");
   add_pattern_options(chart_cmd, c);
@@ -239,7 +261,7 @@ int main(int argc, char** argv) {
     return exit_usage;
   }
   // --quality sets the density; --sides and --tolerance, when given, win over it.
-  for (auto [cmd, args] : {std::pair{build_cmd, &b}, std::pair{render_cmd, &r}}) {
+  for (auto [cmd, args] : {std::pair{build_cmd, &b}, std::pair{render_cmd, &r}, std::pair{snapshot_cmd, &n}}) {
     if (!cmd->parsed() || !args->quality) continue;
     const knitc::Density d = knitc::density(*args->quality);
     if (cmd->get_option("--sides")->count() == 0) args->compile.sides = d.sides;
@@ -263,6 +285,7 @@ int main(int argc, char** argv) {
     r.render.height = h;
     return render(r);
   }
+  if (snapshot_cmd->parsed()) return snapshot(n);
   if (chart_cmd->parsed()) return chart(c);
   if (check_cmd->parsed()) return check(k);
   if (reference_cmd->parsed()) {

@@ -1,5 +1,7 @@
 #include "compile.hpp"
 
+#include "parallel.hpp"
+
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
@@ -116,11 +118,12 @@ mesh::Mesh build_mesh(const Pattern& pattern, const std::vector<CurvePiece>& pie
     }
     return out;
   }
-  // One primitive per yarn, in material order.
-  std::vector<mesh::Primitive> by_yarn(pattern.yarns.size());
-  for (const CurvePiece& p : pieces) {
-    mesh::Primitive& prim = by_yarn[p.path.yarn];
-    prim.material = material_of[p.path.yarn];
+  // Each piece's tubes on their own (in parallel), then one primitive per yarn, the
+  // pieces in order: the same bytes for any thread count.
+  std::vector<mesh::Primitive> tubes(pieces.size());
+  parallel_for(pieces.size(), thread_count(options.threads), [&](std::size_t i) {
+    const CurvePiece& p = pieces[i];
+    mesh::Primitive& prim = tubes[i];
     prim.mode = mode;
     const Yarn& yarn = pattern.yarns[p.path.yarn];
     const auto strands = sweep::strands(p.frames, p.arc_length, cross_section(yarn));
@@ -128,9 +131,35 @@ mesh::Mesh build_mesh(const Pattern& pattern, const std::vector<CurvePiece>& pie
     const int sides = yarn.section == Section::plied ? std::max(5, (options.sides + 1) / 2) : options.sides;
     if (mode == mesh::Mode::triangles) sweep::append_tubes(strands, p.arc_length, sides, prim);
     else sweep::append_wireframe(strands, sides, prim);
-  }
-  for (auto& prim : by_yarn) {
-    if (!prim.indices.empty()) out.primitives.push_back(std::move(prim));
+  });
+  for (std::size_t y = 0; y < pattern.yarns.size(); ++y) {
+    mesh::Primitive prim;
+    prim.material = material_of[y];
+    prim.mode = mode;
+    std::size_t vertices = 0, indices = 0;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      if (pieces[i].path.yarn != static_cast<int>(y)) continue;
+      vertices += tubes[i].positions.size();
+      indices += tubes[i].indices.size();
+    }
+    if (indices == 0) continue;
+    prim.positions.reserve(vertices);
+    prim.indices.reserve(indices);
+    if (mode == mesh::Mode::triangles) {
+      prim.normals.reserve(vertices);
+      prim.uvs.reserve(vertices);
+    }
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      if (pieces[i].path.yarn != static_cast<int>(y)) continue;
+      mesh::Primitive& t = tubes[i];
+      const auto offset = static_cast<std::uint32_t>(prim.positions.size());
+      prim.positions.insert(prim.positions.end(), t.positions.begin(), t.positions.end());
+      prim.normals.insert(prim.normals.end(), t.normals.begin(), t.normals.end());
+      prim.uvs.insert(prim.uvs.end(), t.uvs.begin(), t.uvs.end());
+      for (std::uint32_t index : t.indices) prim.indices.push_back(index + offset);
+      t = mesh::Primitive{};  // free as we go
+    }
+    out.primitives.push_back(std::move(prim));
   }
   return out;
 }
@@ -151,8 +180,9 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
   Fabric fabric;
   fabric.layout = layout::lay_out(pattern);
   auto paths = yarn_paths::trace(fabric.layout, options.loop_model);
-  fabric.pieces.reserve(paths.size());
-  for (auto& path : paths) fabric.pieces.push_back(trace_curve(std::move(path), pattern, options));
+  fabric.pieces.resize(paths.size());
+  parallel_for(paths.size(), thread_count(options.threads),
+               [&](std::size_t i) { fabric.pieces[i] = trace_curve(std::move(paths[i]), pattern, options); });
   fabric.mesh = build_mesh(pattern, fabric.pieces, options);
   return fabric;
 }

@@ -35,6 +35,7 @@ struct CompileOptions {
   View view = View::surface;
   int sides = 12;                 // vertices per tube ring, >= 3 (plies get about half, at least 5)
   double chord_tolerance = 0.01;  // as a fraction of the yarn diameter, > 0
+  int threads = 0;                // 0: every core; the result is the same for any count
 };
 
 // One yarn piece through the stages: its data points, its curve, its samples.

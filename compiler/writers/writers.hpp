@@ -30,6 +30,11 @@ std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_p
 // pattern changes yarn.
 std::string chart_text(const Pattern& pattern);
 
+// A short, stable, diff-friendly summary of a compiled fabric for snapshot tests: counts,
+// each yarn's length (0.001 mm), the bounds (0.001 mm) and a 64-bit FNV-1a hash of every
+// position quantised to 1 micrometre and every index. The same for any thread count.
+std::string snapshot(const Pattern& pattern, const Fabric& fabric);
+
 struct OutputFile {
   std::string path;
   std::string bytes;

@@ -1,0 +1,81 @@
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+
+#include "writers/writers.hpp"
+
+namespace knitc::writers {
+
+namespace {
+
+// FNV-1a, 64 bits: small, stable, no dependency.
+struct Fnv1a {
+  std::uint64_t state = 0xcbf29ce484222325ull;
+  void add(std::uint64_t v) {
+    for (int i = 0; i < 8; ++i) {
+      state ^= (v >> (8 * i)) & 0xffu;
+      state *= 0x100000001b3ull;
+    }
+  }
+};
+
+std::int64_t micrometres(double mm) { return static_cast<std::int64_t>(std::llround(mm * 1000.0)); }
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v == 0.0 ? 0.0 : v);  // no "-0.000"
+  return buf;
+}
+
+}  // namespace
+
+std::string snapshot(const Pattern& pattern, const Fabric& fabric) {
+  std::string out = "knitc snapshot 1\n";
+  out += "pattern     " + pattern.name + "\n";
+  out += "courses     " + std::to_string(fabric.layout.courses) + "\n";
+  out += "wales       " + std::to_string(fabric.layout.wales) + "\n";
+  out += "loops       " + std::to_string(fabric.layout.loops.size()) + "\n";
+  out += "pieces      " + std::to_string(fabric.pieces.size()) + "\n";
+  for (std::size_t y = 0; y < pattern.yarns.size(); ++y) {
+    double length = 0.0;
+    for (const CurvePiece& p : fabric.pieces) {
+      if (p.path.yarn == static_cast<int>(y) && !p.arc_length.empty()) length += p.arc_length.back();
+    }
+    out += "yarn " + pattern.yarns[y].id + " mm  " + fixed(length, 3) + "\n";
+  }
+  std::size_t vertices = 0, elements = 0, triangles = 0;
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) lo[k] = std::numeric_limits<double>::infinity(), hi[k] = -lo[k];
+  // The geometry's hash: every position to 1 micrometre, every index, primitive by primitive.
+  Fnv1a hash;
+  for (const mesh::Primitive& p : fabric.mesh.primitives) {
+    hash.add(static_cast<std::uint64_t>(p.material));
+    hash.add(static_cast<std::uint64_t>(p.mode));
+    hash.add(p.positions.size());
+    for (const auto& v : p.positions) {
+      for (int k = 0; k < 3; ++k) {
+        hash.add(static_cast<std::uint64_t>(micrometres(v[k])));
+        lo[k] = std::min(lo[k], static_cast<double>(v[k]));
+        hi[k] = std::max(hi[k], static_cast<double>(v[k]));
+      }
+    }
+    for (std::uint32_t i : p.indices) hash.add(i);
+    vertices += p.positions.size();
+    elements += p.indices.size();
+    if (p.mode == mesh::Mode::triangles) triangles += p.indices.size() / 3;
+  }
+  out += "vertices    " + std::to_string(vertices) + "\n";
+  out += "indices     " + std::to_string(elements) + "\n";
+  out += "triangles   " + std::to_string(triangles) + "\n";
+  if (vertices > 0) {
+    out += "bounds mm   " + fixed(lo[0], 3) + " " + fixed(lo[1], 3) + " " + fixed(lo[2], 3) + " .. " + fixed(hi[0], 3) + " " +
+           fixed(hi[1], 3) + " " + fixed(hi[2], 3) + "\n";
+  }
+  char h[32];
+  std::snprintf(h, sizeof h, "%016llx", static_cast<unsigned long long>(hash.state));
+  out += std::string("geometry    fnv1a64 ") + h + "\n";
+  return out;
+}
+
+}  // namespace knitc::writers
