@@ -56,7 +56,8 @@ double arc_length(const Curve& c, double u0, double u1) {
   double total = 0.0;
   // Integrate knot span by knot span: across a knot the speed is only C^(p-1).
   double a = u0;
-  for (std::size_t i = 0; i < c.knots.size() && a < u1; ++i) {
+  // From u0's own span: a course's curve has thousands of knots, a sample interval a few.
+  for (std::size_t i = static_cast<std::size_t>(find_span(c, u0)) + 1; i < c.knots.size() && a < u1; ++i) {
     const double k = c.knots[i];
     if (k <= a) continue;
     const double b = std::min(k, u1);
