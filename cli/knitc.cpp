@@ -91,13 +91,24 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric) {
              hi.z);
 }
 
-int build(const Args& args) {
+struct Compiled {
+  knitc::Pattern pattern;
+  knitc::Fabric fabric;
+};
+
+// The pattern run and compiled, or the exit code when either failed.
+std::variant<Compiled, int> load_and_compile(const Args& args) {
   auto loaded = load(args);
   if (const int* code = std::get_if<int>(&loaded)) return *code;
-  const auto& pattern = std::get<knitc::Pattern>(loaded);
-  auto compiled = compile(pattern, args);
+  auto compiled = compile(std::get<knitc::Pattern>(loaded), args);
   if (const int* code = std::get_if<int>(&compiled)) return *code;
-  const auto& fabric = std::get<knitc::Fabric>(compiled);
+  return Compiled{std::move(std::get<knitc::Pattern>(loaded)), std::move(std::get<knitc::Fabric>(compiled))};
+}
+
+int build(const Args& args) {
+  auto result = load_and_compile(args);
+  if (const int* code = std::get_if<int>(&result)) return *code;
+  const auto& [pattern, fabric] = std::get<Compiled>(result);
   std::vector<knitc::writers::OutputFile> files;
   files.push_back({args.output, knitc::writers::glb(fabric.mesh, "knitc " KNITC_VERSION)});
   if (!args.centreline.empty())
@@ -109,12 +120,9 @@ int build(const Args& args) {
 }
 
 int render(const Args& args) {
-  auto loaded = load(args);
-  if (const int* code = std::get_if<int>(&loaded)) return *code;
-  const auto& pattern = std::get<knitc::Pattern>(loaded);
-  auto compiled = compile(pattern, args);
-  if (const int* code = std::get_if<int>(&compiled)) return *code;
-  const auto& fabric = std::get<knitc::Fabric>(compiled);
+  auto result = load_and_compile(args);
+  if (const int* code = std::get_if<int>(&result)) return *code;
+  const auto& [pattern, fabric] = std::get<Compiled>(result);
   std::string png;
   try {
     png = knitc::render::png(fabric.mesh, args.render);
@@ -129,12 +137,10 @@ int render(const Args& args) {
 }
 
 int snapshot(const Args& args) {
-  auto loaded = load(args);
-  if (const int* code = std::get_if<int>(&loaded)) return *code;
-  const auto& pattern = std::get<knitc::Pattern>(loaded);
-  auto compiled = compile(pattern, args);
-  if (const int* code = std::get_if<int>(&compiled)) return *code;
-  const std::string text = knitc::writers::snapshot(pattern, std::get<knitc::Fabric>(compiled));
+  auto result = load_and_compile(args);
+  if (const int* code = std::get_if<int>(&result)) return *code;
+  const auto& [pattern, fabric] = std::get<Compiled>(result);
+  const std::string text = knitc::writers::snapshot(pattern, fabric);
   if (args.output.empty()) {
     fmt::print("{}", text);
     return 0;

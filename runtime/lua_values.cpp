@@ -105,6 +105,24 @@ void only_known_keys(lua_State* L, int index, const std::string& table, std::ini
   }
 }
 
+void only_known_fields(lua_State* L, int index, const std::string& table, std::initializer_list<const char*> known) {
+  std::vector<std::string> named;
+  index = lua_absindex(L, index);
+  lua_pushnil(L);
+  while (lua_next(L, index) != 0) {
+    lua_pop(L, 1);
+    if (lua_type(L, -1) == LUA_TSTRING) named.emplace_back(lua_tostring(L, -1));
+  }
+  std::sort(named.begin(), named.end());  // the first unknown one, whatever the table order
+  for (const std::string& key : named) {
+    if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) {
+      std::string list;
+      for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
+      fail(L, "unknown field '" + key + "' in " + table + "; known fields: " + list);
+    }
+  }
+}
+
 long long whole_number(lua_State* L, int arg, const std::string& what, long long lo, long long hi) {
   if (lua_type(L, arg) != LUA_TNUMBER) fail(L, what + " must be a whole number, not a " + luaL_typename(L, arg));
   int is_integer = 0;

@@ -105,18 +105,7 @@ int course_verb(lua_State* L) {
   need_pattern(L, "course");
   Script& s = script_of(L);
   if (lua_type(L, 1) != LUA_TTABLE) fail(L, std::string("course takes a table, e.g. course { k, p, rep = 6 }, not a ") + luaL_typename(L, 1));
-  for (const std::string& key : [&] {
-         std::vector<std::string> named;
-         lua_pushnil(L);
-         while (lua_next(L, 1) != 0) {
-           lua_pop(L, 1);
-           if (lua_type(L, -1) == LUA_TSTRING) named.emplace_back(lua_tostring(L, -1));
-         }
-         std::sort(named.begin(), named.end());
-         return named;
-       }()) {
-    if (key != "rep" && key != "yarn") fail(L, "unknown field '" + key + "' in course{}; known fields: rep, yarn");
-  }
+  only_known_fields(L, 1, "course{}", {"rep", "yarn"});
   const lua_Integer n = luaL_len(L, 1);
   if (n == 0) fail(L, "course{} lists no stitches; give some, e.g. course { k, p }");
   std::string text;
@@ -195,18 +184,7 @@ int chart_verb(lua_State* L) {
   if (lua_type(L, 1) == LUA_TSTRING) {
     text = lua_tostring(L, 1);
   } else if (lua_type(L, 1) == LUA_TTABLE) {
-    for (const std::string& key : [&] {
-           std::vector<std::string> named;
-           lua_pushnil(L);
-           while (lua_next(L, 1) != 0) {
-             lua_pop(L, 1);
-             if (lua_type(L, -1) == LUA_TSTRING) named.emplace_back(lua_tostring(L, -1));
-           }
-           std::sort(named.begin(), named.end());
-           return named;
-         }()) {
-      if (key != "rep" && key != "legend") fail(L, "unknown field '" + key + "' in chart{}; known fields: legend, rep");
-    }
+    only_known_fields(L, 1, "chart{}", {"legend", "rep"});
     lua_geti(L, 1, 1);
     if (lua_type(L, -1) != LUA_TSTRING) fail(L, "chart{} needs the chart text first: chart { [[ ... ]], rep = 2 }");
     text = lua_tostring(L, -1);

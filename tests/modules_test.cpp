@@ -246,7 +246,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"round", 12, "ribs.k2p2(2.5)\n", "t.lua:4: ribs.k2p2: rows must be a whole number from 1 up, not 2.5"},
         BadCall{"flat", 12, "row \"k\"\nribs.k1p1(0)\n", "t.lua:5: ribs.k1p1: rows must be a whole number from 1 up, not 0"},
         BadCall{"round", 12, "ribs.garter()\n", "t.lua:4: ribs.garter: rows must be a whole number from 1 up, not nil"},
-        BadCall{"round", 12, "ribs.seed(\"4\")\n", "t.lua:4: ribs.seed: rows must be a whole number from 1 up, not a string"},
+        BadCall{"round", 12, "ribs.seed(\"4\")\n", "t.lua:4: ribs.seed: rows must be a whole number from 1 up, not \"4\""},
         BadCall{"round", 12, "local function band()\n  ribs.moss(-1)\nend\nband()\n",
                 "t.lua:5: ribs.moss: rows must be a whole number from 1 up, not -1"},
         BadCall{"flat", 13, "ribs.k2p2(4)\n", "t.lua:4: ribs.k2p2 needs a multiple of 4 stitches, or of 4 plus 2; 13 are live"},

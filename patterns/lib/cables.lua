@@ -24,23 +24,8 @@
 local cables = {}
 
 local row, live, knitting, row_number = row, live, knitting, row_number
-
-local function whole(value, least)
-  if type(value) ~= "number" then return nil end
-  local n = math.tointeger(value)
-  if n == nil or n < least then return nil end
-  return n
-end
-
-local function shown(value)
-  if type(value) == "number" or value == nil then return tostring(value) end
-  if type(value) == "string" then return ("%q"):format(value) end
-  return "a " .. type(value)
-end
-
-local function wrong_side()
-  return knitting() == "flat" and row_number() % 2 == 0
-end
+local working = require "working"
+local whole, shown, rows_problem, wrong_side = working.whole, working.shown, working.rows_problem, working.wrong_side
 
 -- The fields of args that the list `known` does not name, sorted, as one string; nil if
 -- none. (Sorted: the order pairs() visits them in never reaches a message.)

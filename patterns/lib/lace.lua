@@ -24,27 +24,8 @@
 local lace = {}
 
 local row, live, knitting, row_number = row, live, knitting, row_number
-
-local function whole(value, least)
-  if type(value) ~= "number" then return nil end
-  local n = math.tointeger(value)
-  if n == nil or n < least then return nil end
-  return n
-end
-
-local function shown(value)
-  if type(value) == "number" or value == nil then return tostring(value) end
-  return "a " .. type(value)
-end
-
-local function rows_problem(name, rows)
-  if whole(rows, 1) then return nil end
-  return name .. ": rows must be a whole number from 1 up, not " .. shown(rows)
-end
-
-local function wrong_side()
-  return knitting() == "flat" and row_number() % 2 == 0
-end
+local working = require "working"
+local whole, shown, rows_problem, wrong_side = working.whole, working.shown, working.rows_problem, working.wrong_side
 
 -- One row whose face is all knit (stockinette) or all purl.
 local function plain_row(face_knit)
