@@ -213,7 +213,22 @@ void add_compile_options(CLI::App* cmd, Args& a) {
 
 }  // namespace
 
+int run(int argc, char** argv);
+
+// Never a crash: whatever escapes is reported, and no output has been renamed into place.
 int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::fputs("knitc: out of memory; knit a smaller piece or use --quality draft\n", stderr);
+    return exit_usage;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "knitc: %s\n", e.what());
+    return exit_usage;
+  }
+}
+
+int run(int argc, char** argv) {
   CLI::App app{"knitc: compiles knitting pattern scripts into yarn-level 3D fabric", "knitc"};
   app.set_version_flag("--version", "knitc " KNITC_VERSION);
   app.require_subcommand(1);

@@ -177,12 +177,36 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
                            ", which knitc cannot lay out in 3D yet (only k and p so far); knitc check and knitc chart accept it");
     }
   }
+  std::uint64_t loops = 0;
+  for (const Course& c : pattern.courses) loops += c.ops.size();
+  if (loops > max_loops)
+    throw CompileError(pattern.courses.front().where.file + ": the fabric has " + std::to_string(loops) +
+                       " loops; knitc lays out at most " + std::to_string(max_loops) + " (knitc check and chart take more)");
+  // Before sampling, a cautious estimate (half the rings the plain loop needs, about 55
+  // at 1% tolerance, scaling as tolerance^-1/2) turns away the hopeless in a moment.
+  const double rings_per_loop = 0.5 * 55.0 * std::sqrt(0.01 / options.chord_tolerance);
+  if (static_cast<double>(loops) * rings_per_loop * (options.sides + 1) > static_cast<double>(max_vertices))
+    throw CompileError(pattern.courses.front().where.file + ": " + std::to_string(loops) + " loops at this quality make a mesh " +
+                       "over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +
+                       " million vertices; knit a smaller piece, or use --quality draft");
   Fabric fabric;
   fabric.layout = layout::lay_out(pattern);
   auto paths = yarn_paths::trace(fabric.layout, options.loop_model);
   fabric.pieces.resize(paths.size());
   parallel_for(paths.size(), thread_count(options.threads),
                [&](std::size_t i) { fabric.pieces[i] = trace_curve(std::move(paths[i]), pattern, options); });
+  // The mesh's size is known from the samples: refuse what no machine of ours holds (and
+  // what 32-bit indices cannot address) before allocating it.
+  std::uint64_t vertices = 0;
+  for (const CurvePiece& p : fabric.pieces) {
+    const Yarn& yarn = pattern.yarns[p.path.yarn];
+    const std::uint64_t strands = yarn.section == Section::plied ? static_cast<std::uint64_t>(yarn.plies) : 1;
+    vertices += strands * (p.samples.size() + 2) * static_cast<std::uint64_t>(options.sides + 1);
+  }
+  if (vertices > max_vertices)
+    throw CompileError(pattern.courses.front().where.file + ": the mesh would have " + std::to_string(vertices / 1'000'000) +
+                       " million vertices, over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +
+                       " million; knit a smaller piece, or use --quality draft");
   fabric.mesh = build_mesh(pattern, fabric.pieces, options);
   return fabric;
 }

@@ -2,6 +2,7 @@
 // sweep -> Mesh. Each stage is a function of plain data; this file only runs them in turn.
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <vector>
 
@@ -59,6 +60,11 @@ struct Fabric {
 // The frames each loop model sweeps with: Frenet for the paper's, rotation-minimising
 // for the smooth one.
 sweep::FrameKind frame_kind(yarn_paths::LoopModel model);
+
+// Sizes past which compile() refuses a fabric rather than run out of memory: about
+// 12 GB of mesh, and the loops that take minutes before the mesh is even sized.
+inline constexpr std::uint64_t max_vertices = 200'000'000;
+inline constexpr std::uint64_t max_loops = 2'000'000;
 
 // A pattern the compiler cannot make geometry for (yet). what() is "file:line: ...".
 class CompileError : public std::runtime_error {

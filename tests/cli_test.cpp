@@ -136,6 +136,22 @@ TEST(Cli, PatternProblemsExitOneAndWriteNothing) {
   fs::remove_all(dir);
 }
 
+TEST(Cli, FabricsTooBigToMeshAreRefusedBeforeMemoryRunsOut) {
+  const fs::path dir = test::scratch_dir("huge");
+  const std::string header = "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } } }\n";
+  test::write_text(dir / "loops.lua", header + "cast_on(100000)\nrows(200, \"k\")\n");
+  test::write_text(dir / "fine.lua", header + "cast_on(1000)\nrows(1500, \"k\")\n");
+  const auto loops = test::run_knitc("build " + quoted(dir / "loops.lua") + " -o " + quoted(dir / "x.glb"));
+  EXPECT_EQ(loops.exit_code, 1);
+  EXPECT_NE(loops.err.find("knitc lays out at most 2000000"), std::string::npos) << loops.err;
+  const auto fine = test::run_knitc("build " + quoted(dir / "fine.lua") + " --quality fine -o " + quoted(dir / "x.glb"));
+  EXPECT_EQ(fine.exit_code, 1);
+  EXPECT_NE(fine.err.find("over knitc's limit of 200 million vertices"), std::string::npos) << fine.err;
+  EXPECT_EQ(test::run_knitc("check " + quoted(dir / "loops.lua")).exit_code, 0);  // the pattern itself is fine
+  EXPECT_FALSE(fs::exists(dir / "x.glb"));
+  fs::remove_all(dir);
+}
+
 TEST(Cli, CommandLineMisuseExitsTwo) {
   const fs::path dir = test::scratch_dir("usage");
   const std::string out = " -o " + quoted(dir / "x.glb");
