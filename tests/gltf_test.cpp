@@ -1,0 +1,55 @@
+// The .glb read back by another reader (tinygltf's loader): what the writer meant is what
+// a client gets, in metres.
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include "support.hpp"
+#include "writers/writers.hpp"
+
+namespace knitc {
+namespace {
+
+TEST(Gltf, ReadsBackWithTheMeshItWasWrittenFrom) {
+  const Pattern p = runtime::run_pattern(
+                        "pattern { gauge = { stitches = 22, rows = 30 }, yarns = { A = { diameter = 1, color = \"#ff0000\" },\n"
+                        "  B = { diameter = 1, section = \"plied\", plies = 2 } } }\ncast_on(6)\nrows(2, \"k\")\nyarn \"B\"\nrows(2, \"k\")\n",
+                        "t.lua")
+                        .pattern;
+  const Fabric f = compile(p, CompileOptions{});
+  const std::string bytes = writers::glb(f.mesh, "knitc test");
+  tinygltf::Model m;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                          static_cast<unsigned int>(bytes.size())))
+      << err;
+  EXPECT_EQ(m.asset.generator, "knitc test");
+  ASSERT_EQ(m.meshes.size(), 1u);
+  ASSERT_EQ(m.meshes[0].primitives.size(), 2u);
+  ASSERT_EQ(m.materials.size(), 2u);
+  EXPECT_NEAR(m.materials[0].pbrMetallicRoughness.baseColorFactor[0], 1.0, 1e-6);  // #ff0000 is linear 1, 0, 0
+  EXPECT_NEAR(m.materials[0].pbrMetallicRoughness.baseColorFactor[1], 0.0, 1e-6);
+  EXPECT_TRUE(m.materials[0].extensions.count("KHR_materials_sheen"));
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& prim = m.meshes[0].primitives[i];
+    const auto& src = f.mesh.primitives[i];
+    EXPECT_EQ(prim.mode, TINYGLTF_MODE_TRIANGLES);
+    const auto& pos = m.accessors[prim.attributes.at("POSITION")];
+    ASSERT_EQ(pos.count, src.positions.size());
+    const auto& view = m.bufferViews[pos.bufferView];
+    const float* xyz = reinterpret_cast<const float*>(m.buffers[view.buffer].data.data() + view.byteOffset + pos.byteOffset);
+    for (std::size_t v = 0; v < src.positions.size(); v += 97) {
+      for (int k = 0; k < 3; ++k) EXPECT_FLOAT_EQ(xyz[3 * v + k], src.positions[v][k] * 0.001f);  // metres
+    }
+    EXPECT_EQ(m.accessors[prim.attributes.at("NORMAL")].count, src.positions.size());
+    EXPECT_EQ(m.accessors[prim.attributes.at("TEXCOORD_0")].count, src.positions.size());
+    const auto& idx = m.accessors[prim.indices];
+    EXPECT_EQ(idx.componentType, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+    EXPECT_EQ(idx.count, src.indices.size());
+    ASSERT_EQ(pos.minValues.size(), 3u);
+    for (int k = 0; k < 3; ++k) EXPECT_LT(pos.minValues[k], pos.maxValues[k]);
+  }
+}
+
+}  // namespace
+}  // namespace knitc
