@@ -79,7 +79,7 @@ CurvePiece trace_curve(yarn_paths::Piece path, const Pattern& pattern, const Com
   piece.frames = sweep::frames(piece.curve.curve, piece.samples, frame_kind(options.loop_model));
   piece.arc_length.assign(piece.samples.size(), 0.0);
   for (std::size_t i = 1; i < piece.samples.size(); ++i)
-    piece.arc_length[i] = piece.arc_length[i - 1] + nurbs::arc_length(piece.curve.curve, piece.samples[i - 1], piece.samples[i]);
+    piece.arc_length[i] = piece.arc_length[i - 1] + nurbs::segment_length(piece.curve.curve, piece.samples[i - 1], piece.samples[i]);
   return piece;
 }
 

@@ -51,6 +51,26 @@ double adaptive(const Curve& c, double a, double b, double whole, int depth) {
 
 }  // namespace
 
+double segment_length(const Curve& c, double u0, double u1) {
+  constexpr double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
+  constexpr double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                           0.2369268850561891};
+  auto rule = [&](double a, double b) {
+    const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+    double sum = 0.0;
+    for (int i = 0; i < 5; ++i) sum += w[i] * glm::length(derivatives(c, mid + half * x[i], 1)[1]);
+    return sum * half;
+  };
+  // The speed is only C^(p-1) across a knot: one rule per knot span.
+  double total = 0.0, a = u0;
+  for (std::size_t i = static_cast<std::size_t>(find_span(c, u0)) + 1; i < c.knots.size() && c.knots[i] < u1; ++i) {
+    if (c.knots[i] <= a) continue;
+    total += rule(a, c.knots[i]);
+    a = c.knots[i];
+  }
+  return total + rule(a, u1);
+}
+
 double arc_length(const Curve& c, double u0, double u1) {
   if (!(u0 < u1)) return 0.0;
   double total = 0.0;

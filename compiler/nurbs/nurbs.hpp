@@ -52,6 +52,12 @@ double torsion(const Curve& curve, double u);
 // relative accuracy of about 1e-10.
 double arc_length(const Curve& curve, double u0, double u1);
 
+// Arc length of a short piece of C over [u0, u1] by one 5-point Gauss-Legendre rule per
+// knot span it crosses, without arc_length's adaptive refinement: for the spacing of sweep
+// samples it agrees with arc_length to the snapshots' 0.001 mm over a whole fabric, at a
+// fraction of the cost.
+double segment_length(const Curve& curve, double u0, double u1);
+
 enum class Parametrisation {
   chord_length,  // parameter steps proportional to |Q_k - Q_{k-1}| (P&T eq. 9.5)
   centripetal,   // proportional to |Q_k - Q_{k-1}|^(1/2) (P&T eq. 9.6)
