@@ -1,0 +1,53 @@
+// The knit graph: every loop of the fabric, the loops it is pulled through (its
+// parents), its yarn and its place along that yarn. Plain data from the Pattern; the
+// layout places these loops in space.
+//
+// The needle holds live stitches; a live stitch is the loops held together on one needle
+// (one, or more when tucks stack on it). Working a course, each op takes its stitches'
+// worth of live stitches in face order:
+//   knit, purl, decreases, cables  a new loop through all the loops they take;
+//   yarn over                      a new loop with no parent;
+//   tuck                           a new loop held on the needle with the old ones;
+//   slip                           no new loop: the old stitch moves across, the yarn floats;
+//   no stitch                      nothing.
+#pragma once
+
+#include <vector>
+
+#include "pattern.hpp"
+
+namespace knitc::knit_graph {
+
+struct Loop {
+  int course = 0;         // 0 is the cast-on; pattern course i is course i + 1
+  int position = 0;       // left to right in face view among the loops its course makes
+  StitchId stitch = 0;    // the op that made it (the cast-on's loops say k)
+  int yarn = 0;           // index into Pattern::yarns
+  int order = 0;          // place along its yarn, in working order, from 0
+  std::vector<int> parents;  // loops it is pulled through, in face order: indices into Graph::loops
+  bool held = false;         // a tuck loop: caught on the needle, knitted off with the next loop
+};
+
+// A stretch of yarn that passes stitches by without making a loop: a slipped stitch's
+// float, in face-view stitch positions [first, last] of the needle in its course.
+struct Float {
+  int course = 0;
+  int first = 0, last = 0;
+  int yarn = 0;
+  bool in_front = false;  // on the face side (slip wyif), else behind
+};
+
+struct Graph {
+  std::vector<Loop> loops;        // the cast-on's, then course by course in face order
+  std::vector<int> course_first;  // index of each course's first loop; one more entry at the end
+  std::vector<Float> floats;
+  // After the last course: the live stitches, each the loops its needle holds.
+  std::vector<std::vector<int>> live;
+};
+
+// Builds the graph. The runtime checks stitch counts as the script runs; the graph checks
+// them again, so the language and the compiler cannot disagree: a course that does not
+// work exactly the live stitches throws std::invalid_argument naming the row.
+Graph build(const Pattern& pattern);
+
+}  // namespace knitc::knit_graph

@@ -1,0 +1,112 @@
+// The knit graph: parents, yarn order and the needle's live stitches for each kind of
+// stitch.
+#include <gtest/gtest.h>
+
+#include "knit_graph/knit_graph.hpp"
+#include "support.hpp"
+
+namespace knitc {
+namespace {
+
+Pattern run(const std::string& body, bool flat = false) {
+  return runtime::run_pattern(std::string("pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 }, ") +
+                                  "B = { diameter = 1 } }" + (flat ? ", knitting = \"flat\"" : "") + " }\n" + body,
+                              "t.lua")
+      .pattern;
+}
+
+// The loop at (course, position).
+const knit_graph::Loop& at(const knit_graph::Graph& g, int course, int position) {
+  return g.loops[g.course_first[course] + position];
+}
+
+TEST(KnitGraph, JerseyLoopsArePulledThroughTheLoopBelow) {
+  const auto g = knit_graph::build(run("cast_on(3)\nrows(2, \"k\")\n"));
+  ASSERT_EQ(g.loops.size(), 9u);
+  ASSERT_EQ(g.course_first.size(), 4u + 0u);  // cast-on, two courses, the end
+  for (int c = 1; c <= 2; ++c) {
+    for (int w = 0; w < 3; ++w) {
+      const auto& l = at(g, c, w);
+      EXPECT_EQ(l.course, c);
+      EXPECT_EQ(l.position, w);
+      ASSERT_EQ(l.parents.size(), 1u);
+      EXPECT_EQ(l.parents[0], g.course_first[c - 1] + w);
+    }
+  }
+  // In the round every row is worked from the right edge: the order along the yarn runs
+  // right to left in each course and continues course after course.
+  EXPECT_EQ(at(g, 0, 2).order, 0);
+  EXPECT_EQ(at(g, 0, 0).order, 2);
+  EXPECT_EQ(at(g, 1, 2).order, 3);
+  EXPECT_EQ(at(g, 1, 0).order, 5);
+  EXPECT_EQ(at(g, 2, 2).order, 6);
+  EXPECT_EQ(g.live.size(), 3u);
+}
+
+TEST(KnitGraph, FlatWrongSideRowsRunLeftToRight) {
+  const auto g = knit_graph::build(run("cast_on(3)\nrows(2, \"k\")\n", true));
+  EXPECT_EQ(at(g, 1, 2).order, 3);  // right side: from the right edge
+  EXPECT_EQ(at(g, 2, 0).order, 6);  // wrong side: from the left edge, as the yarn turns
+  EXPECT_EQ(at(g, 2, 2).order, 8);
+}
+
+TEST(KnitGraph, DecreasesGatherAndYarnOversHaveNoParent) {
+  // Face view of "k1, yo, k2tog, k1" worked from the right edge: k, k2tog, yo, k.
+  const auto g = knit_graph::build(run("cast_on(4)\nrow \"k1, yo, k2tog, k1\"\n"));
+  ASSERT_EQ(g.course_first[2] - g.course_first[1], 4);
+  EXPECT_EQ(stitch(at(g, 1, 1).stitch).name, "k2tog");
+  EXPECT_EQ(at(g, 1, 1).parents, (std::vector<int>{1, 2}));
+  EXPECT_EQ(stitch(at(g, 1, 2).stitch).name, "yo");
+  EXPECT_TRUE(at(g, 1, 2).parents.empty());
+  EXPECT_EQ(at(g, 1, 3).parents, (std::vector<int>{3}));
+}
+
+TEST(KnitGraph, TucksAreHeldAndKnittedOffWithTheOldLoop) {
+  const auto g = knit_graph::build(run("cast_on(2)\nrow \"tuck, k\"\nrow \"k\"\n"));
+  // Face: k, tuck. The tuck loop is held; the next loop above goes through both.
+  const auto& tuck = at(g, 1, 1);
+  EXPECT_TRUE(tuck.held);
+  EXPECT_TRUE(tuck.parents.empty());
+  const int tuck_index = g.course_first[1] + 1;
+  EXPECT_EQ(at(g, 2, 1).parents, (std::vector<int>{1, tuck_index}));
+}
+
+TEST(KnitGraph, SlippedStitchesMakeNoLoopAndFloat) {
+  const auto g = knit_graph::build(run("cast_on(3)\nrow \"k1, sl1 wyif, k1\"\nrow \"k\"\n"));
+  EXPECT_EQ(g.course_first[2] - g.course_first[1], 2);  // two loops made, one slipped
+  ASSERT_EQ(g.floats.size(), 1u);
+  EXPECT_EQ(g.floats[0].first, 1);
+  EXPECT_TRUE(g.floats[0].in_front);
+  // The loop above the slipped stitch is pulled through the cast-on loop, two courses down.
+  EXPECT_EQ(at(g, 2, 1).parents, (std::vector<int>{1}));
+}
+
+TEST(KnitGraph, CablesCrossTheirParents) {
+  // C4F: the right pair is held in front and worked last, so it lands on the left.
+  const auto g = knit_graph::build(run("cast_on(4)\nrow \"C4F\"\n"));
+  EXPECT_EQ(at(g, 1, 0).parents, (std::vector<int>{2}));
+  EXPECT_EQ(at(g, 1, 1).parents, (std::vector<int>{3}));
+  EXPECT_EQ(at(g, 1, 2).parents, (std::vector<int>{0}));
+  EXPECT_EQ(at(g, 1, 3).parents, (std::vector<int>{1}));
+  // T3B: one purl held in back; the knit pair moves right.
+  const auto t = knit_graph::build(run("cast_on(3)\nrow \"T3B\"\n"));
+  EXPECT_EQ(at(t, 1, 0).parents, (std::vector<int>{2}));
+  EXPECT_EQ(at(t, 1, 1).parents, (std::vector<int>{0}));
+  EXPECT_EQ(at(t, 1, 2).parents, (std::vector<int>{1}));
+}
+
+TEST(KnitGraph, EachYarnCountsItsOwnOrder) {
+  const auto g = knit_graph::build(run("cast_on(2)\nrow \"k\"\nyarn \"B\"\nrow \"k\"\n"));
+  EXPECT_EQ(at(g, 2, 1).yarn, 1);
+  EXPECT_EQ(at(g, 2, 1).order, 0);  // B's first loop
+  EXPECT_EQ(at(g, 2, 0).order, 1);
+}
+
+TEST(KnitGraph, ACourseThatDoesNotFitTheNeedleIsRefused) {
+  Pattern p = run("cast_on(3)\nrow \"k\"\n");
+  p.courses[0].ops.pop_back();
+  EXPECT_THROW(knit_graph::build(p), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace knitc
