@@ -110,9 +110,9 @@ int build(const Args& args) {
   if (const int* code = std::get_if<int>(&result)) return *code;
   const auto& [pattern, fabric] = std::get<Compiled>(result);
   std::vector<knitc::writers::OutputFile> files;
-  files.push_back({args.output, knitc::writers::glb(fabric.mesh, "knitc " KNITC_VERSION)});
+  files.push_back({args.output, [&](std::ostream& out) { knitc::writers::write_glb(fabric.mesh, "knitc " KNITC_VERSION, out); }});
   if (!args.centreline.empty())
-    files.push_back({args.centreline, knitc::writers::centreline_json(pattern, fabric, args.compile.loop_model)});
+    files.push_back(knitc::writers::text_file(args.centreline, knitc::writers::centreline_json(pattern, fabric, args.compile.loop_model)));
   if (const int code = write(files); code != 0) return code;
   if (args.stats) print_stats(pattern, fabric);
   if (!args.quiet && !args.stats) fmt::print(stderr, "knitc: wrote {} ({} loops)\n", args.output, fabric.layout.loops.size());
@@ -130,7 +130,7 @@ int render(const Args& args) {
     fmt::print(stderr, "knitc: cannot render: {}\n", e.what());
     return exit_usage;
   }
-  if (const int code = write({{args.output, std::move(png)}}); code != 0) return code;
+  if (const int code = write({knitc::writers::text_file(args.output, std::move(png))}); code != 0) return code;
   if (args.stats) print_stats(pattern, fabric);
   if (!args.quiet && !args.stats) fmt::print(stderr, "knitc: wrote {}\n", args.output);
   return 0;
@@ -145,7 +145,7 @@ int snapshot(const Args& args) {
     fmt::print("{}", text);
     return 0;
   }
-  return write({{args.output, text}});
+  return write({knitc::writers::text_file(args.output, text)});
 }
 
 int chart(const Args& args) {

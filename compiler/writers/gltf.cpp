@@ -48,10 +48,14 @@ int add_accessor(tinygltf::Model& m, int view, int component, std::size_t count,
   return static_cast<int>(m.accessors.size()) - 1;
 }
 
-void add_primitive(tinygltf::Model& m, const mesh::Primitive& p) {
-  std::vector<float> xyz(p.positions.size() * 3);
-  std::vector<double> lo(3, std::numeric_limits<double>::infinity());
-  std::vector<double> hi(3, -std::numeric_limits<double>::infinity());
+// Positions go straight into the buffer, converted to metres on the way.
+int add_positions(tinygltf::Model& m, const mesh::Primitive& p, std::vector<double>& lo, std::vector<double>& hi) {
+  auto& buffer = m.buffers[0].data;
+  const std::size_t offset = buffer.size(), bytes = p.positions.size() * 3 * sizeof(float);
+  buffer.resize((offset + bytes + 3) & ~std::size_t{3}, 0);
+  float* xyz = reinterpret_cast<float*>(buffer.data() + offset);
+  lo.assign(3, std::numeric_limits<double>::infinity());
+  hi.assign(3, -std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < p.positions.size(); ++i) {
     for (int k = 0; k < 3; ++k) {
       const float v = p.positions[i][k] * metres_per_mm;
@@ -60,10 +64,21 @@ void add_primitive(tinygltf::Model& m, const mesh::Primitive& p) {
       hi[k] = std::max(hi[k], static_cast<double>(v));
     }
   }
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = offset;
+  view.byteLength = bytes;
+  view.target = TINYGLTF_TARGET_ARRAY_BUFFER;
+  m.bufferViews.push_back(view);
+  return static_cast<int>(m.bufferViews.size()) - 1;
+}
+
+void add_primitive(tinygltf::Model& m, const mesh::Primitive& p) {
+  std::vector<double> lo, hi;
   tinygltf::Primitive prim;
   prim.mode = gltf_mode(p.mode);
   prim.material = p.material;
-  const int pos_view = add_view(m, xyz.data(), xyz.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+  const int pos_view = add_positions(m, p, lo, hi);
   const int pos = add_accessor(m, pos_view, TINYGLTF_COMPONENT_TYPE_FLOAT, p.positions.size(), TINYGLTF_TYPE_VEC3);
   m.accessors[pos].minValues = lo;
   m.accessors[pos].maxValues = hi;
@@ -85,13 +100,20 @@ void add_primitive(tinygltf::Model& m, const mesh::Primitive& p) {
 
 }  // namespace
 
-std::string glb(const mesh::Mesh& mesh, const std::string& generator) {
+void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out) {
   static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
   if (mesh.primitives.empty()) throw std::runtime_error("glTF needs at least one primitive; the mesh is empty");
   tinygltf::Model m;
   m.asset.version = "2.0";
   m.asset.generator = generator;
   m.buffers.resize(1);
+  // The buffer's size is known: one allocation, each array written once into it.
+  std::size_t bytes = 0;
+  for (const mesh::Primitive& p : mesh.primitives) {
+    bytes += p.positions.size() * sizeof(glm::vec3) + p.normals.size() * sizeof(glm::vec3) +
+             p.uvs.size() * sizeof(glm::vec2) + p.indices.size() * sizeof(std::uint32_t) + 16;
+  }
+  m.buffers[0].data.reserve(bytes);
   if (!mesh.materials.empty()) m.extensionsUsed.push_back("KHR_materials_sheen");
   for (const mesh::Material& mat : mesh.materials) {
     tinygltf::Material g;
@@ -119,10 +141,13 @@ std::string glb(const mesh::Mesh& mesh, const std::string& generator) {
   scene.nodes = {0};
   m.scenes.push_back(scene);
   m.defaultScene = 0;
-
-  std::ostringstream out;
   tinygltf::TinyGLTF writer;
   if (!writer.WriteGltfSceneToStream(&m, out, false, true)) throw std::runtime_error("glTF serialisation failed");
+}
+
+std::string glb(const mesh::Mesh& mesh, const std::string& generator) {
+  std::ostringstream out;
+  write_glb(mesh, generator, out);
   return std::move(out).str();
 }
 

@@ -1,6 +1,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -22,17 +23,32 @@ void remove_all(std::span<const OutputFile> files, std::size_t count) {
 
 }  // namespace
 
+OutputFile text_file(std::string path, std::string bytes) {
+  return {std::move(path), [bytes = std::move(bytes)](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); }};
+}
+
 void write_files(std::span<const OutputFile> files) {
   // First every temporary, completely and flushed; only then the renames.
   for (std::size_t i = 0; i < files.size(); ++i) {
     const std::string tmp = temporary_for(files[i].path);
-    std::FILE* f = std::fopen(tmp.c_str(), "wb");
-    bool ok = f != nullptr;
-    const int open_errno = errno;
-    if (ok) ok = std::fwrite(files[i].bytes.data(), 1, files[i].bytes.size(), f) == files[i].bytes.size();
-    if (f != nullptr && std::fclose(f) != 0) ok = false;
+    bool ok = false;
+    std::string why;
+    {
+      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+      if (!out) {
+        why = std::strerror(errno);
+      } else {
+        try {
+          files[i].write(out);
+          out.flush();
+          ok = static_cast<bool>(out);
+          if (!ok) why = "write failed (disk full?)";
+        } catch (const std::exception& e) {
+          why = e.what();
+        }
+      }
+    }
     if (!ok) {
-      const std::string why = std::strerror(f == nullptr ? open_errno : errno);
       remove_all(files, i + 1);
       throw std::runtime_error("cannot write " + files[i].path + ": " + why);
     }

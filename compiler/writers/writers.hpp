@@ -2,6 +2,8 @@
 // They know the mesh and plain geometry, not how it was made.
 #pragma once
 
+#include <functional>
+#include <ostream>
 #include <span>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@ namespace knitc::writers {
 // mesh with a primitive per mesh primitive, one material per mesh material (base colour,
 // not metallic), uint32 indices, POSITION with min and max, NORMAL where present.
 // `generator` goes to asset.generator. Throws std::runtime_error if serialisation fails.
+void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out);
 std::string glb(const mesh::Mesh& mesh, const std::string& generator);
 
 // The centreline JSON (units mm), rounded to 1e-6 mm:
@@ -37,8 +40,11 @@ std::string snapshot(const Pattern& pattern, const Fabric& fabric);
 
 struct OutputFile {
   std::string path;
-  std::string bytes;
+  std::function<void(std::ostream&)> write;  // writes the file's whole content
 };
+
+// A file whose content is already in memory.
+OutputFile text_file(std::string path, std::string bytes);
 
 // Writes every file to a temporary file beside its target, then renames each into
 // place, so a failure never leaves a partial or clobbered file. Throws
