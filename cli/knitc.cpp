@@ -1,6 +1,10 @@
 // knitc: the command line. The only place that wires runtime, compiler and writers.
 // Exit codes: 0 success, 1 a problem in the pattern, 2 bad command-line use.
+#include <chrono>
 #include <cstdio>
+#include <mutex>
+
+#include <unistd.h>
 #include <limits>
 #include <map>
 #include <optional>
@@ -12,6 +16,7 @@
 #include <fmt/core.h>
 #include <glm/common.hpp>
 
+#include "bench.hpp"
 #include "compile.hpp"
 #include "render.hpp"
 #include "runtime.hpp"
@@ -50,9 +55,41 @@ std::variant<knitc::Pattern, int> load(const Args& args) {
   }
 }
 
+// Progress on a terminal: the stage and its percentage on stderr, once a build has taken
+// more than a second; nothing when stderr is not a terminal or with --quiet.
+class Progress {
+ public:
+  explicit Progress(bool enabled) : enabled_(enabled && ::isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
+  ~Progress() {
+    if (shown_) std::fputs("\r\033[K", stderr);
+  }
+  void operator()(const char* stage, double fraction) {
+    if (!enabled_) return;
+    std::lock_guard lock(mutex_);
+    const int percent = static_cast<int>(fraction * 100.0);
+    if (percent == last_ && stage == last_stage_) return;
+    if (std::chrono::steady_clock::now() - start_ < std::chrono::seconds(1)) return;
+    last_ = percent;
+    last_stage_ = stage;
+    shown_ = true;
+    std::fprintf(stderr, "\rknitc: %s %3d%%\033[K", stage, percent);
+  }
+
+ private:
+  bool enabled_;
+  bool shown_ = false;
+  int last_ = -1;
+  const char* last_stage_ = nullptr;
+  std::mutex mutex_;
+  std::chrono::steady_clock::time_point start_;
+};
+
 std::variant<knitc::Fabric, int> compile(const knitc::Pattern& pattern, const Args& args) {
   try {
-    return knitc::compile(pattern, args.compile);
+    Progress progress(!args.quiet);
+    knitc::CompileOptions options = args.compile;
+    options.progress = [&progress](const char* stage, double fraction) { progress(stage, fraction); };
+    return knitc::compile(pattern, options);
   } catch (const knitc::CompileError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return exit_pattern;
@@ -267,6 +304,14 @@ int run(int argc, char** argv) {
   auto* check_cmd = app.add_subcommand("check", "validate a pattern only (fast; for editors and hooks)");
   add_pattern_options(check_cmd, k);
 
+  Args bench_args;
+  std::string bench_size = "150x250";
+  bool bench_header = false;
+  auto* bench_cmd = app.add_subcommand("bench", "time the whole job on a jersey swatch of WxH loops (one table row)");
+  bench_cmd->add_option("--swatch", bench_size, "wales x courses, e.g. 150x250 (default)");
+  bench_cmd->add_flag("--header", bench_header, "print the table's header first");
+  add_compile_options(bench_cmd, bench_args);
+
   auto* reference_cmd = app.add_subcommand("reference", "print the pattern language reference (docs/language.md)");
 
   try {
@@ -282,7 +327,8 @@ int run(int argc, char** argv) {
     return exit_usage;
   }
   // --quality sets the density; --sides and --tolerance, when given, win over it.
-  for (auto [cmd, args] : {std::pair{build_cmd, &b}, std::pair{render_cmd, &r}, std::pair{snapshot_cmd, &n}}) {
+  for (auto [cmd, args] : {std::pair{build_cmd, &b}, std::pair{render_cmd, &r}, std::pair{snapshot_cmd, &n},
+                           std::pair{bench_cmd, &bench_args}}) {
     if (!cmd->parsed() || !args->quality) continue;
     const knitc::Density d = knitc::density(*args->quality);
     if (cmd->get_option("--sides")->count() == 0) args->compile.sides = d.sides;
@@ -307,6 +353,20 @@ int run(int argc, char** argv) {
     return render(r);
   }
   if (snapshot_cmd->parsed()) return snapshot(n);
+  if (bench_cmd->parsed()) {
+    int w = 0, h = 0;
+    char rest = 0;
+    if (std::sscanf(bench_size.c_str(), "%dx%d%c", &w, &h, &rest) != 2 || w < 1 || h < 1 || w > 100000 || h > 100000) {
+      fmt::print(stderr, "knitc: --swatch is \"{}\"; give WALESxCOURSES, e.g. 150x250\n", bench_size);
+      return exit_usage;
+    }
+    try {
+      return knitc::cli::bench(w, h, bench_args.compile, bench_header);
+    } catch (const knitc::CompileError& e) {
+      fmt::print(stderr, "{}\n", e.what());
+      return exit_pattern;
+    }
+  }
   if (chart_cmd->parsed()) return chart(c);
   if (check_cmd->parsed()) return check(k);
   if (reference_cmd->parsed()) {

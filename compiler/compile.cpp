@@ -2,6 +2,7 @@
 
 #include "parallel.hpp"
 
+#include <atomic>
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
@@ -193,8 +194,14 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
   fabric.layout = layout::lay_out(pattern);
   auto paths = yarn_paths::trace(fabric.layout, options.loop_model);
   fabric.pieces.resize(paths.size());
-  parallel_for(paths.size(), thread_count(options.threads),
-               [&](std::size_t i) { fabric.pieces[i] = trace_curve(std::move(paths[i]), pattern, options); });
+  std::atomic<std::size_t> traced{0};
+  const std::size_t step = std::max<std::size_t>(1, paths.size() / 100);
+  parallel_for(paths.size(), thread_count(options.threads), [&](std::size_t i) {
+    fabric.pieces[i] = trace_curve(std::move(paths[i]), pattern, options);
+    const std::size_t done = ++traced;
+    if (options.progress && done % step == 0) options.progress("curves", static_cast<double>(done) / static_cast<double>(paths.size()));
+  });
+  if (options.progress) options.progress("mesh", 0.0);
   // The mesh's size is known from the samples: refuse what no machine of ours holds (and
   // what 32-bit indices cannot address) before allocating it.
   std::uint64_t vertices = 0;
@@ -208,6 +215,7 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
                        " million vertices, over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +
                        " million; knit a smaller piece, or use --quality draft");
   fabric.mesh = build_mesh(pattern, fabric.pieces, options);
+  if (options.progress) options.progress("mesh", 1.0);
   return fabric;
 }
 

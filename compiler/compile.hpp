@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -37,6 +38,9 @@ struct CompileOptions {
   int sides = 12;                 // vertices per tube ring, >= 3 (plies get about half, at least 5)
   double chord_tolerance = 0.01;  // as a fraction of the yarn diameter, > 0
   int threads = 0;                // 0: every core; the result is the same for any count
+  // Called with a stage's name and how far it is, in [0, 1], from any thread (so it must
+  // be thread-safe); for a progress display. It never changes the result.
+  std::function<void(const char* stage, double fraction)> progress;
 };
 
 // One yarn piece through the stages: its data points, its curve, its samples.

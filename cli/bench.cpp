@@ -1,0 +1,80 @@
+#include "bench.hpp"
+
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include <fmt/core.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "runtime.hpp"
+#include "writers/writers.hpp"
+
+namespace knitc::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+double peak_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
+}
+
+// A memcpy of `bytes`, the best of three: what writing the output to memory costs.
+double memcpy_seconds(std::size_t bytes) {
+  std::vector<char> from(bytes, 1), to(bytes, 0);
+  double best = 1e30;
+  for (int i = 0; i < 3; ++i) {
+    const auto t0 = Clock::now();
+    std::memcpy(to.data(), from.data(), bytes);
+    best = std::min(best, seconds_since(t0));
+    if (to[bytes / 2] != 1) return -1.0;  // keeps the copy from being optimised away
+  }
+  return best;
+}
+
+}  // namespace
+
+int bench(int wales, int courses, const CompileOptions& options, bool header) {
+  const std::string source = fmt::format(
+      "pattern {{ name = \"bench\", gauge = {{ loop_width = 4.0, loop_height = 4.2, thickness = 2.0 }},\n"
+      "  yarns = {{ A = {{ diameter = 1.0, color = \"#d9c8a9\" }} }} }}\ncast_on({})\nrows({}, \"k\")\n",
+      wales, courses);
+  const auto start = Clock::now();
+  const Pattern pattern = runtime::run_pattern(source, "bench.lua").pattern;
+  const double script = seconds_since(start);
+  const auto t1 = Clock::now();
+  Fabric fabric = compile(pattern, options);
+  const double mesh = seconds_since(t1);
+  const auto path = std::filesystem::temp_directory_path() / fmt::format("knitc-bench-{}.glb", ::getpid());
+  const auto t2 = Clock::now();
+  writers::write_files(std::vector<writers::OutputFile>{
+      {path.string(), [&](std::ostream& out) { writers::write_glb(fabric.mesh, "knitc bench", out); }}});
+  const double write = seconds_since(t2);
+  const double total = seconds_since(start);
+  const auto bytes = std::filesystem::file_size(path);
+  std::filesystem::remove(path);
+  std::size_t triangles = 0;
+  for (const auto& p : fabric.mesh.primitives) triangles += p.indices.size() / 3;
+  const double loops = static_cast<double>(fabric.layout.loops.size());
+  fabric = Fabric{};
+  const double copy = memcpy_seconds(bytes);
+  if (header) {
+    fmt::print("| swatch | sides, tolerance | loops | triangles | .glb MB | script s | mesh s | write s | total s | "
+               "loops/s | triangles/s | mesh / memcpy | peak MiB |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  }
+  fmt::print("| {}x{} | {}, {} | {:.0f} | {} | {:.1f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.0f} | {:.3g} | {:.1f} | {:.0f} |\n",
+             wales, courses, options.sides, options.chord_tolerance, loops, triangles, static_cast<double>(bytes) / 1e6,
+             script, mesh, write, total, loops / total, static_cast<double>(triangles) / total, mesh / copy, peak_mib());
+  return 0;
+}
+
+}  // namespace knitc::cli
