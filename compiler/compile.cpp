@@ -190,8 +190,12 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
     throw CompileError(pattern.courses.front().where.file + ": " + std::to_string(loops) + " loops at this quality make a mesh " +
                        "over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +
                        " million vertices; knit a smaller piece, or use --quality draft");
+  return compile(pattern, layout::lay_out(pattern), options);
+}
+
+Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptions& options) {
   Fabric fabric;
-  fabric.layout = layout::lay_out(pattern);
+  fabric.layout = std::move(layout);
   auto paths = yarn_paths::trace(fabric.layout, options.loop_model);
   fabric.pieces.resize(paths.size());
   std::atomic<std::size_t> traced{0};

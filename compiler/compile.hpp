@@ -66,8 +66,8 @@ struct Fabric {
 sweep::FrameKind frame_kind(yarn_paths::LoopModel model);
 
 // Sizes past which compile() refuses a fabric rather than run out of memory: about
-// 12 GB of mesh, and the loops that take minutes before the mesh is even sized.
-inline constexpr std::uint64_t max_vertices = 200'000'000;
+// 14 GB at peak on the way to the file, and the loops that take minutes before the mesh is even sized.
+inline constexpr std::uint64_t max_vertices = 80'000'000;
 inline constexpr std::uint64_t max_loops = 2'000'000;
 
 // A pattern the compiler cannot make geometry for (yet). what() is "file:line: ...".
@@ -79,6 +79,9 @@ class CompileError : public std::runtime_error {
 // Compiles a validated pattern (the runtime validates) into geometry. Throws
 // CompileError for stitches the layout has no template for yet.
 Fabric compile(const Pattern& pattern, const CompileOptions& options);
+// The stages after the layout, on a given one (its loops' data points may be changed):
+// yarn paths, curves, sweep, mesh.
+Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptions& options);
 
 // How a yarn's cross-section is swept.
 sweep::CrossSection cross_section(const Yarn& yarn);

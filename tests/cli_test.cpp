@@ -146,7 +146,7 @@ TEST(Cli, FabricsTooBigToMeshAreRefusedBeforeMemoryRunsOut) {
   EXPECT_NE(loops.err.find("knitc lays out at most 2000000"), std::string::npos) << loops.err;
   const auto fine = test::run_knitc("build " + quoted(dir / "fine.lua") + " --quality fine -o " + quoted(dir / "x.glb"));
   EXPECT_EQ(fine.exit_code, 1);
-  EXPECT_NE(fine.err.find("over knitc's limit of 200 million vertices"), std::string::npos) << fine.err;
+  EXPECT_NE(fine.err.find("over knitc's limit of 80 million vertices"), std::string::npos) << fine.err;
   EXPECT_EQ(test::run_knitc("check " + quoted(dir / "loops.lua")).exit_code, 0);  // the pattern itself is fine
   EXPECT_FALSE(fs::exists(dir / "x.glb"));
   fs::remove_all(dir);

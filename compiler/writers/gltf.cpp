@@ -1,10 +1,15 @@
+// The binary glTF writer. The JSON is small and written with nlohmann-json; the binary
+// chunk is written straight from the mesh's arrays (positions scaled to metres on the way
+// in blocks), so the mesh is never copied whole: the output costs about what its bytes do.
+// (tinygltf reads the files back in the tests.)
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 
-#include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 #include "writers/writers.hpp"
 
@@ -12,137 +17,152 @@ namespace knitc::writers {
 
 namespace {
 
+using json = nlohmann::ordered_json;
+
 constexpr float metres_per_mm = 0.001f;
+constexpr int gl_float = 5126, gl_unsigned_int = 5125;
+constexpr int gl_array_buffer = 34962, gl_element_array_buffer = 34963;
 
 int gltf_mode(mesh::Mode mode) {
   switch (mode) {
-    case mesh::Mode::triangles: return TINYGLTF_MODE_TRIANGLES;
-    case mesh::Mode::lines: return TINYGLTF_MODE_LINE;
-    case mesh::Mode::line_strip: return TINYGLTF_MODE_LINE_STRIP;
+    case mesh::Mode::triangles: return 4;
+    case mesh::Mode::lines: return 1;
+    case mesh::Mode::line_strip: return 3;
   }
-  return TINYGLTF_MODE_TRIANGLES;
+  return 4;
 }
 
-// Appends bytes to the single buffer as a buffer view of its own; returns the view.
-int add_view(tinygltf::Model& m, const void* data, std::size_t bytes, int target) {
-  auto& buffer = m.buffers[0].data;
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = buffer.size();
-  view.byteLength = bytes;
-  view.target = target;
-  const auto* p = static_cast<const unsigned char*>(data);
-  buffer.insert(buffer.end(), p, p + bytes);
-  buffer.resize((buffer.size() + 3) & ~std::size_t{3}, 0);  // keep every view 4-aligned
-  m.bufferViews.push_back(view);
-  return static_cast<int>(m.bufferViews.size()) - 1;
-}
+std::size_t padded(std::size_t n) { return (n + 3) & ~std::size_t{3}; }
 
-int add_accessor(tinygltf::Model& m, int view, int component, std::size_t count, int type) {
-  tinygltf::Accessor a;
-  a.bufferView = view;
-  a.componentType = component;
-  a.count = count;
-  a.type = type;
-  m.accessors.push_back(a);
-  return static_cast<int>(m.accessors.size()) - 1;
-}
+// One array of the binary chunk: where it goes and how to write it.
+struct Block {
+  std::size_t offset = 0, bytes = 0;
+  const mesh::Primitive* primitive = nullptr;
+  enum class What { positions, normals, uvs, indices } what = What::positions;
+};
 
-// Positions go straight into the buffer, converted to metres on the way.
-int add_positions(tinygltf::Model& m, const mesh::Primitive& p, std::vector<double>& lo, std::vector<double>& hi) {
-  auto& buffer = m.buffers[0].data;
-  const std::size_t offset = buffer.size(), bytes = p.positions.size() * 3 * sizeof(float);
-  buffer.resize((offset + bytes + 3) & ~std::size_t{3}, 0);
-  float* xyz = reinterpret_cast<float*>(buffer.data() + offset);
-  lo.assign(3, std::numeric_limits<double>::infinity());
-  hi.assign(3, -std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < p.positions.size(); ++i) {
-    for (int k = 0; k < 3; ++k) {
-      const float v = p.positions[i][k] * metres_per_mm;
-      xyz[3 * i + k] = v;
-      lo[k] = std::min(lo[k], static_cast<double>(v));
-      hi[k] = std::max(hi[k], static_cast<double>(v));
+void write_block(const Block& b, std::ostream& out) {
+  const mesh::Primitive& p = *b.primitive;
+  switch (b.what) {
+    case Block::What::positions: {
+      // In blocks of 4096 vertices: metres, without a copy of the whole array.
+      std::array<float, 3 * 4096> chunk;
+      for (std::size_t first = 0; first < p.positions.size(); first += 4096) {
+        const std::size_t n = std::min<std::size_t>(4096, p.positions.size() - first);
+        for (std::size_t i = 0; i < n; ++i) {
+          for (int k = 0; k < 3; ++k) chunk[3 * i + k] = p.positions[first + i][k] * metres_per_mm;
+        }
+        out.write(reinterpret_cast<const char*>(chunk.data()), static_cast<std::streamsize>(n * 3 * sizeof(float)));
+      }
+      break;
     }
+    case Block::What::normals:
+      out.write(reinterpret_cast<const char*>(p.normals.data()), static_cast<std::streamsize>(b.bytes));
+      break;
+    case Block::What::uvs:
+      out.write(reinterpret_cast<const char*>(p.uvs.data()), static_cast<std::streamsize>(b.bytes));
+      break;
+    case Block::What::indices:
+      out.write(reinterpret_cast<const char*>(p.indices.data()), static_cast<std::streamsize>(b.bytes));
+      break;
   }
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = offset;
-  view.byteLength = bytes;
-  view.target = TINYGLTF_TARGET_ARRAY_BUFFER;
-  m.bufferViews.push_back(view);
-  return static_cast<int>(m.bufferViews.size()) - 1;
+  static constexpr char zeros[4] = {};
+  out.write(zeros, static_cast<std::streamsize>(padded(b.bytes) - b.bytes));
 }
 
-void add_primitive(tinygltf::Model& m, const mesh::Primitive& p) {
-  std::vector<double> lo, hi;
-  tinygltf::Primitive prim;
-  prim.mode = gltf_mode(p.mode);
-  prim.material = p.material;
-  const int pos_view = add_positions(m, p, lo, hi);
-  const int pos = add_accessor(m, pos_view, TINYGLTF_COMPONENT_TYPE_FLOAT, p.positions.size(), TINYGLTF_TYPE_VEC3);
-  m.accessors[pos].minValues = lo;
-  m.accessors[pos].maxValues = hi;
-  prim.attributes["POSITION"] = pos;
-  if (!p.normals.empty()) {
-    const int view = add_view(m, p.normals.data(), p.normals.size() * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
-    prim.attributes["NORMAL"] = add_accessor(m, view, TINYGLTF_COMPONENT_TYPE_FLOAT, p.normals.size(), TINYGLTF_TYPE_VEC3);
-  }
-  if (!p.uvs.empty()) {
-    static_assert(sizeof(glm::vec2) == 2 * sizeof(float));
-    const int view = add_view(m, p.uvs.data(), p.uvs.size() * sizeof(glm::vec2), TINYGLTF_TARGET_ARRAY_BUFFER);
-    prim.attributes["TEXCOORD_0"] = add_accessor(m, view, TINYGLTF_COMPONENT_TYPE_FLOAT, p.uvs.size(), TINYGLTF_TYPE_VEC2);
-  }
-  const int index_view = add_view(m, p.indices.data(), p.indices.size() * sizeof(std::uint32_t),
-                                  TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-  prim.indices = add_accessor(m, index_view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, p.indices.size(), TINYGLTF_TYPE_SCALAR);
-  m.meshes[0].primitives.push_back(prim);
+void put_u32(std::ostream& out, std::uint32_t v) {
+  const unsigned char b[4] = {static_cast<unsigned char>(v), static_cast<unsigned char>(v >> 8),
+                              static_cast<unsigned char>(v >> 16), static_cast<unsigned char>(v >> 24)};
+  out.write(reinterpret_cast<const char*>(b), 4);
 }
 
 }  // namespace
 
 void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out) {
-  static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+  static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float));
   if (mesh.primitives.empty()) throw std::runtime_error("glTF needs at least one primitive; the mesh is empty");
-  tinygltf::Model m;
-  m.asset.version = "2.0";
-  m.asset.generator = generator;
-  m.buffers.resize(1);
-  // The buffer's size is known: one allocation, each array written once into it.
-  std::size_t bytes = 0;
+  json doc;
+  doc["asset"] = {{"version", "2.0"}, {"generator", generator}};
+  if (!mesh.materials.empty()) doc["extensionsUsed"] = json::array({"KHR_materials_sheen"});
+  doc["scene"] = 0;
+  doc["scenes"] = json::array({{{"nodes", json::array({0})}}});
+  doc["nodes"] = json::array({{{"name", "fabric"}, {"mesh", 0}}});
+
+  json materials = json::array();
+  for (const mesh::Material& m : mesh.materials) {
+    materials.push_back(
+        {{"name", m.name},
+         {"pbrMetallicRoughness",
+          {{"baseColorFactor", {m.base_color.r, m.base_color.g, m.base_color.b, 1.0}},
+           {"metallicFactor", 0.0},  // yarn is a dielectric
+           {"roughnessFactor", 0.85}}},
+         // Fibres scatter light at grazing angles: the soft rim of cloth.
+         {"extensions",
+          {{"KHR_materials_sheen",
+            {{"sheenColorFactor", {m.sheen_color.r, m.sheen_color.g, m.sheen_color.b}},
+             {"sheenRoughnessFactor", m.sheen_roughness}}}}}});
+  }
+  if (!materials.empty()) doc["materials"] = std::move(materials);
+
+  json views = json::array(), accessors = json::array(), primitives = json::array();
+  std::vector<Block> blocks;
+  std::size_t offset = 0;
+  auto add = [&](const mesh::Primitive& p, Block::What what, std::size_t bytes, int target, json accessor) {
+    blocks.push_back({offset, bytes, &p, what});
+    views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", target}});
+    accessor["bufferView"] = views.size() - 1;
+    accessors.push_back(std::move(accessor));
+    offset += padded(bytes);
+    return accessors.size() - 1;
+  };
   for (const mesh::Primitive& p : mesh.primitives) {
-    bytes += p.positions.size() * sizeof(glm::vec3) + p.normals.size() * sizeof(glm::vec3) +
-             p.uvs.size() * sizeof(glm::vec2) + p.indices.size() * sizeof(std::uint32_t) + 16;
+    std::array<double, 3> lo, hi;
+    lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for (const auto& v : p.positions) {
+      for (int k = 0; k < 3; ++k) {
+        const double m = static_cast<double>(v[k] * metres_per_mm);  // exactly the value written
+        lo[k] = std::min(lo[k], m);
+        hi[k] = std::max(hi[k], m);
+      }
+    }
+    json prim;
+    json attributes;
+    attributes["POSITION"] = add(p, Block::What::positions, p.positions.size() * sizeof(glm::vec3), gl_array_buffer,
+                                 {{"componentType", gl_float}, {"count", p.positions.size()}, {"type", "VEC3"},
+                                  {"min", lo}, {"max", hi}});
+    if (!p.normals.empty())
+      attributes["NORMAL"] = add(p, Block::What::normals, p.normals.size() * sizeof(glm::vec3), gl_array_buffer,
+                                 {{"componentType", gl_float}, {"count", p.normals.size()}, {"type", "VEC3"}});
+    if (!p.uvs.empty())
+      attributes["TEXCOORD_0"] = add(p, Block::What::uvs, p.uvs.size() * sizeof(glm::vec2), gl_array_buffer,
+                                     {{"componentType", gl_float}, {"count", p.uvs.size()}, {"type", "VEC2"}});
+    prim["attributes"] = std::move(attributes);
+    prim["indices"] = add(p, Block::What::indices, p.indices.size() * sizeof(std::uint32_t), gl_element_array_buffer,
+                          {{"componentType", gl_unsigned_int}, {"count", p.indices.size()}, {"type", "SCALAR"}});
+    prim["material"] = p.material;
+    prim["mode"] = gltf_mode(p.mode);
+    primitives.push_back(std::move(prim));
   }
-  m.buffers[0].data.reserve(bytes);
-  if (!mesh.materials.empty()) m.extensionsUsed.push_back("KHR_materials_sheen");
-  for (const mesh::Material& mat : mesh.materials) {
-    tinygltf::Material g;
-    g.name = mat.name;
-    g.pbrMetallicRoughness.baseColorFactor = {mat.base_color.r, mat.base_color.g, mat.base_color.b, 1.0};
-    g.pbrMetallicRoughness.metallicFactor = 0.0;  // yarn is a dielectric
-    g.pbrMetallicRoughness.roughnessFactor = 0.85;
-    // Fibres scatter light at grazing angles: the soft rim of cloth.
-    tinygltf::Value::Object sheen;
-    sheen["sheenColorFactor"] = tinygltf::Value(tinygltf::Value::Array{
-        tinygltf::Value(static_cast<double>(mat.sheen_color.r)), tinygltf::Value(static_cast<double>(mat.sheen_color.g)),
-        tinygltf::Value(static_cast<double>(mat.sheen_color.b))});
-    sheen["sheenRoughnessFactor"] = tinygltf::Value(static_cast<double>(mat.sheen_roughness));
-    g.extensions["KHR_materials_sheen"] = tinygltf::Value(sheen);
-    m.materials.push_back(g);
-  }
-  m.meshes.resize(1);
-  m.meshes[0].name = "fabric";
-  for (const mesh::Primitive& p : mesh.primitives) add_primitive(m, p);
-  tinygltf::Node node;
-  node.name = "fabric";
-  node.mesh = 0;
-  m.nodes.push_back(node);
-  tinygltf::Scene scene;
-  scene.nodes = {0};
-  m.scenes.push_back(scene);
-  m.defaultScene = 0;
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&m, out, false, true)) throw std::runtime_error("glTF serialisation failed");
+  doc["meshes"] = json::array({{{"name", "fabric"}, {"primitives", std::move(primitives)}}});
+  doc["accessors"] = std::move(accessors);
+  doc["bufferViews"] = std::move(views);
+  doc["buffers"] = json::array({{{"byteLength", offset}}});
+
+  std::string text = doc.dump();
+  text.resize(padded(text.size()), ' ');  // the JSON chunk is padded with spaces
+  const std::size_t total = 12 + 8 + text.size() + 8 + offset;
+  if (total > std::numeric_limits<std::uint32_t>::max())
+    throw std::runtime_error("the mesh is over the 4 GiB a .glb can hold; knit a smaller piece or use --quality draft");
+  out.write("glTF", 4);
+  put_u32(out, 2);
+  put_u32(out, static_cast<std::uint32_t>(total));
+  put_u32(out, static_cast<std::uint32_t>(text.size()));
+  put_u32(out, 0x4E4F534Au);  // JSON
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  put_u32(out, static_cast<std::uint32_t>(offset));
+  put_u32(out, 0x004E4942u);  // BIN
+  for (const Block& b : blocks) write_block(b, out);
 }
 
 std::string glb(const mesh::Mesh& mesh, const std::string& generator) {
