@@ -38,6 +38,7 @@ struct Args {
   std::optional<knitc::Quality> quality;
   bool stats = false;
   bool quiet = false;
+  bool compress = false;
 };
 
 // The pattern, or the exit code when it could not be had. Warnings go to stderr.
@@ -147,7 +148,9 @@ int build(const Args& args) {
   if (const int* code = std::get_if<int>(&result)) return *code;
   const auto& [pattern, fabric] = std::get<Compiled>(result);
   std::vector<knitc::writers::OutputFile> files;
-  files.push_back({args.output, [&](std::ostream& out) { knitc::writers::write_glb(fabric.mesh, "knitc " KNITC_VERSION, out); }});
+  files.push_back({args.output, [&](std::ostream& out) {
+                     knitc::writers::write_glb(fabric.mesh, "knitc " KNITC_VERSION, out, {args.compress});
+                   }});
   if (!args.centreline.empty())
     files.push_back(knitc::writers::text_file(args.centreline, knitc::writers::centreline_json(pattern, fabric, args.compile.loop_model)));
   if (const int code = write(files); code != 0) return code;
@@ -275,6 +278,8 @@ int run(int argc, char** argv) {
   add_pattern_options(build_cmd, b);
   build_cmd->add_option("-o,--output", b.output, "the .glb to write")->required();
   build_cmd->add_option("--centreline", b.centreline, "also write the centrelines and loop data points as JSON (mm)");
+  build_cmd->add_flag("--compress", b.compress,
+                      "quantise positions (uint16) and normals (int8) with KHR_mesh_quantization: a smaller file");
   add_compile_options(build_cmd, b);
 
   Args r;

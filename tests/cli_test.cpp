@@ -23,6 +23,8 @@ TEST(Cli, BuildsTheDefaultPatternInEveryViewAndLoopModel) {
       {"jersey-centreline.glb", "--view centreline"},
       {"jersey-centreline-paper.glb", "--view centreline --loop-model paper"},
       {"jersey-centripetal-coarse.glb", "--parameters centripetal --sides 5 --tolerance 0.1"},
+      {"jersey-compressed.glb", "--compress"},
+      {"jersey-compressed-wireframe.glb", "--compress --view wireframe"},
   };
   for (const auto& [name, options] : cases) {
     const auto r = test::run_knitc("build patterns/jersey.lua -q -o " + quoted(dir / name) + " " + options);

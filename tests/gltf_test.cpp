@@ -1,5 +1,7 @@
 // The .glb read back by another reader (tinygltf's loader): what the writer meant is what
 // a client gets, in metres.
+#include <cstring>
+
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
@@ -49,6 +51,48 @@ TEST(Gltf, ReadsBackWithTheMeshItWasWrittenFrom) {
     ASSERT_EQ(pos.minValues.size(), 3u);
     for (int k = 0; k < 3; ++k) EXPECT_LT(pos.minValues[k], pos.maxValues[k]);
   }
+}
+
+}  // namespace
+}  // namespace knitc
+
+namespace knitc {
+namespace {
+
+TEST(Gltf, QuantisedPositionsComeBackWithinHalfAStep) {
+  const Pattern p = test::jersey(5, 4);
+  const Fabric f = compile(p, CompileOptions{});
+  const std::string bytes = writers::glb(f.mesh, "knitc test", {true});
+  EXPECT_LT(bytes.size(), writers::glb(f.mesh, "knitc test").size() * 4 / 5);
+  tinygltf::Model m;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                          static_cast<unsigned int>(bytes.size())))
+      << err;
+  ASSERT_EQ(m.extensionsRequired, std::vector<std::string>{"KHR_mesh_quantization"});
+  const auto& node = m.nodes[0];
+  ASSERT_EQ(node.scale.size(), 3u);
+  ASSERT_EQ(node.translation.size(), 3u);
+  const auto& prim = m.meshes[0].primitives[0];
+  const auto& pos = m.accessors[prim.attributes.at("POSITION")];
+  EXPECT_EQ(pos.componentType, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+  const auto& view = m.bufferViews[pos.bufferView];
+  EXPECT_EQ(view.byteStride, 8u);
+  const auto* data = m.buffers[0].data.data() + view.byteOffset;
+  const auto& src = f.mesh.primitives[0];
+  ASSERT_EQ(pos.count, src.positions.size());
+  for (std::size_t v = 0; v < src.positions.size(); v += 53) {
+    for (int k = 0; k < 3; ++k) {
+      std::uint16_t q;
+      std::memcpy(&q, data + 8 * v + 2 * k, 2);
+      const double metres = node.translation[k] + node.scale[k] * q;
+      EXPECT_NEAR(metres, src.positions[v][k] * 0.001, 0.51 * node.scale[k] + 1e-9);
+    }
+  }
+  const auto& normal = m.accessors[prim.attributes.at("NORMAL")];
+  EXPECT_EQ(normal.componentType, TINYGLTF_COMPONENT_TYPE_BYTE);
+  EXPECT_TRUE(normal.normalized);
 }
 
 }  // namespace

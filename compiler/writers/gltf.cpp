@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <glm/common.hpp>
 #include <nlohmann/json.hpp>
 
 #include "writers/writers.hpp"
@@ -20,7 +21,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 constexpr float metres_per_mm = 0.001f;
-constexpr int gl_float = 5126, gl_unsigned_int = 5125;
+constexpr int gl_float = 5126, gl_unsigned_int = 5125, gl_unsigned_short = 5123, gl_byte = 5120;
 constexpr int gl_array_buffer = 34962, gl_element_array_buffer = 34963;
 
 int gltf_mode(mesh::Mode mode) {
@@ -39,10 +40,45 @@ struct Block {
   std::size_t offset = 0, bytes = 0;
   const mesh::Primitive* primitive = nullptr;
   enum class What { positions, normals, uvs, indices } what = What::positions;
+  // KHR_mesh_quantization: positions as uint16 in the mesh's box (then the node's scale
+  // and translation), normals as normalised int8; 4-byte aligned elements.
+  bool quantized = false;
+  glm::vec3 lo{0.0f}, step{1.0f};  // mm: position = lo + q * step
 };
+
+std::uint16_t quantize_position(float v, float lo, float step) {
+  return static_cast<std::uint16_t>(std::clamp(std::lround((v - lo) / step), 0L, 65535L));
+}
+
+std::int8_t quantize_normal(float v) { return static_cast<std::int8_t>(std::clamp(std::lround(v * 127.0f), -127L, 127L)); }
+
+void write_quantized(const Block& b, std::ostream& out) {
+  const mesh::Primitive& p = *b.primitive;
+  std::vector<char> chunk;
+  const std::size_t stride = b.what == Block::What::positions ? 8 : 4;
+  for (std::size_t first = 0; first < p.positions.size(); first += 4096) {
+    const std::size_t n = std::min<std::size_t>(4096, p.positions.size() - first);
+    chunk.assign(n * stride, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int k = 0; k < 3; ++k) {
+        if (b.what == Block::What::positions) {
+          const std::uint16_t q = quantize_position(p.positions[first + i][k], b.lo[k], b.step[k]);
+          std::memcpy(&chunk[i * stride + 2 * k], &q, 2);
+        } else {
+          chunk[i * stride + k] = static_cast<char>(quantize_normal(p.normals[first + i][k]));
+        }
+      }
+    }
+    out.write(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+  }
+}
 
 void write_block(const Block& b, std::ostream& out) {
   const mesh::Primitive& p = *b.primitive;
+  if (b.quantized && (b.what == Block::What::positions || b.what == Block::What::normals)) {
+    write_quantized(b, out);
+    return;
+  }
   switch (b.what) {
     case Block::What::positions: {
       // In blocks of 4096 vertices: metres, without a copy of the whole array.
@@ -78,15 +114,33 @@ void put_u32(std::ostream& out, std::uint32_t v) {
 
 }  // namespace
 
-void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out) {
+void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out, const GlbOptions& options) {
   static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float));
   if (mesh.primitives.empty()) throw std::runtime_error("glTF needs at least one primitive; the mesh is empty");
   json doc;
   doc["asset"] = {{"version", "2.0"}, {"generator", generator}};
-  if (!mesh.materials.empty()) doc["extensionsUsed"] = json::array({"KHR_materials_sheen"});
+  json used = json::array();
+  if (!mesh.materials.empty()) used.push_back("KHR_materials_sheen");
+  // The quantisation grid: the whole mesh's box in 65535 steps per axis.
+  glm::vec3 box_lo(std::numeric_limits<float>::max()), box_hi(-std::numeric_limits<float>::max());
+  for (const mesh::Primitive& p : mesh.primitives) {
+    for (const auto& v : p.positions) {
+      box_lo = glm::min(box_lo, v);
+      box_hi = glm::max(box_hi, v);
+    }
+  }
+  const glm::vec3 step = glm::max((box_hi - box_lo) / 65535.0f, glm::vec3(1e-6f));
+  json node = {{"name", "fabric"}, {"mesh", 0}};
+  if (options.quantize) {
+    used.push_back("KHR_mesh_quantization");
+    doc["extensionsRequired"] = json::array({"KHR_mesh_quantization"});
+    node["translation"] = {box_lo.x * metres_per_mm, box_lo.y * metres_per_mm, box_lo.z * metres_per_mm};
+    node["scale"] = {step.x * metres_per_mm, step.y * metres_per_mm, step.z * metres_per_mm};
+  }
+  if (!used.empty()) doc["extensionsUsed"] = std::move(used);
   doc["scene"] = 0;
   doc["scenes"] = json::array({{{"nodes", json::array({0})}}});
-  doc["nodes"] = json::array({{{"name", "fabric"}, {"mesh", 0}}});
+  doc["nodes"] = json::array({std::move(node)});
 
   json materials = json::array();
   for (const mesh::Material& m : mesh.materials) {
@@ -107,9 +161,12 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
   json views = json::array(), accessors = json::array(), primitives = json::array();
   std::vector<Block> blocks;
   std::size_t offset = 0;
-  auto add = [&](const mesh::Primitive& p, Block::What what, std::size_t bytes, int target, json accessor) {
-    blocks.push_back({offset, bytes, &p, what});
-    views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", target}});
+  auto add = [&](const mesh::Primitive& p, Block::What what, std::size_t bytes, int target, json accessor,
+                 std::size_t stride = 0) {
+    blocks.push_back({offset, bytes, &p, what, options.quantize, box_lo, step});
+    json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", target}};
+    if (stride != 0) view["byteStride"] = stride;
+    views.push_back(std::move(view));
     accessor["bufferView"] = views.size() - 1;
     accessors.push_back(std::move(accessor));
     offset += padded(bytes);
@@ -128,12 +185,31 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
     }
     json prim;
     json attributes;
-    attributes["POSITION"] = add(p, Block::What::positions, p.positions.size() * sizeof(glm::vec3), gl_array_buffer,
-                                 {{"componentType", gl_float}, {"count", p.positions.size()}, {"type", "VEC3"},
-                                  {"min", lo}, {"max", hi}});
-    if (!p.normals.empty())
-      attributes["NORMAL"] = add(p, Block::What::normals, p.normals.size() * sizeof(glm::vec3), gl_array_buffer,
-                                 {{"componentType", gl_float}, {"count", p.normals.size()}, {"type", "VEC3"}});
+    if (options.quantize) {
+      std::array<int, 3> qlo{65535, 65535, 65535}, qhi{0, 0, 0};
+      for (const auto& v : p.positions) {
+        for (int k = 0; k < 3; ++k) {
+          const int q = quantize_position(v[k], box_lo[k], step[k]);
+          qlo[k] = std::min(qlo[k], q);
+          qhi[k] = std::max(qhi[k], q);
+        }
+      }
+      attributes["POSITION"] = add(p, Block::What::positions, p.positions.size() * 8, gl_array_buffer,
+                                   {{"componentType", gl_unsigned_short}, {"count", p.positions.size()}, {"type", "VEC3"},
+                                    {"min", qlo}, {"max", qhi}},
+                                   8);
+      if (!p.normals.empty())
+        attributes["NORMAL"] = add(p, Block::What::normals, p.normals.size() * 4, gl_array_buffer,
+                                   {{"componentType", gl_byte}, {"normalized", true}, {"count", p.normals.size()}, {"type", "VEC3"}},
+                                   4);
+    } else {
+      attributes["POSITION"] = add(p, Block::What::positions, p.positions.size() * sizeof(glm::vec3), gl_array_buffer,
+                                   {{"componentType", gl_float}, {"count", p.positions.size()}, {"type", "VEC3"},
+                                    {"min", lo}, {"max", hi}});
+      if (!p.normals.empty())
+        attributes["NORMAL"] = add(p, Block::What::normals, p.normals.size() * sizeof(glm::vec3), gl_array_buffer,
+                                   {{"componentType", gl_float}, {"count", p.normals.size()}, {"type", "VEC3"}});
+    }
     if (!p.uvs.empty())
       attributes["TEXCOORD_0"] = add(p, Block::What::uvs, p.uvs.size() * sizeof(glm::vec2), gl_array_buffer,
                                      {{"componentType", gl_float}, {"count", p.uvs.size()}, {"type", "VEC2"}});
@@ -165,9 +241,9 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
   for (const Block& b : blocks) write_block(b, out);
 }
 
-std::string glb(const mesh::Mesh& mesh, const std::string& generator) {
+std::string glb(const mesh::Mesh& mesh, const std::string& generator, const GlbOptions& options) {
   std::ostringstream out;
-  write_glb(mesh, generator, out);
+  write_glb(mesh, generator, out, options);
   return std::move(out).str();
 }
 

@@ -17,8 +17,14 @@ namespace knitc::writers {
 // mesh with a primitive per mesh primitive, one material per mesh material (base colour,
 // not metallic), uint32 indices, POSITION with min and max, NORMAL where present.
 // `generator` goes to asset.generator. Throws std::runtime_error if serialisation fails.
-void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out);
-std::string glb(const mesh::Mesh& mesh, const std::string& generator);
+// With quantize (KHR_mesh_quantization, a required extension): positions as uint16 on a
+// grid of the mesh's box in 65535 steps per axis (the node's scale and translation map it
+// back to metres; about 1.2 micrometres on an 8 cm swatch), normals as normalised int8.
+struct GlbOptions {
+  bool quantize = false;
+};
+void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out, const GlbOptions& options = {});
+std::string glb(const mesh::Mesh& mesh, const std::string& generator, const GlbOptions& options = {});
 
 // The centreline JSON (units mm), rounded to 1e-6 mm:
 // {"units":"mm","loop_model":..., "yarns":[{"id","color","points","pieces"}],
