@@ -149,7 +149,7 @@ int build(const Args& args) {
   const auto& [pattern, fabric] = std::get<Compiled>(result);
   std::vector<knitc::writers::OutputFile> files;
   files.push_back({args.output, [&](std::ostream& out) {
-                     knitc::writers::write_glb(fabric.mesh, "knitc " KNITC_VERSION, out, {args.compress});
+                     knitc::writers::write_glb(fabric.mesh, "knitc " KNITC_VERSION, out, {args.compress, args.compress});
                    }});
   if (!args.centreline.empty())
     files.push_back(knitc::writers::text_file(args.centreline, knitc::writers::centreline_json(pattern, fabric, args.compile.loop_model)));
@@ -279,7 +279,8 @@ int run(int argc, char** argv) {
   build_cmd->add_option("-o,--output", b.output, "the .glb to write")->required();
   build_cmd->add_option("--centreline", b.centreline, "also write the centrelines and loop data points as JSON (mm)");
   build_cmd->add_flag("--compress", b.compress,
-                      "quantise positions (uint16) and normals (int8) with KHR_mesh_quantization: a smaller file");
+                      "a smaller file: positions (uint16) and normals (int8) quantised with KHR_mesh_quantization, then every "
+                      "buffer view encoded by meshoptimizer (EXT_meshopt_compression)");
   add_compile_options(build_cmd, b);
 
   Args r;

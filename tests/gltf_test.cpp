@@ -3,6 +3,8 @@
 #include <cstring>
 
 #include <gtest/gtest.h>
+#include <meshoptimizer.h>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include "support.hpp"
@@ -93,6 +95,71 @@ TEST(Gltf, QuantisedPositionsComeBackWithinHalfAStep) {
   const auto& normal = m.accessors[prim.attributes.at("NORMAL")];
   EXPECT_EQ(normal.componentType, TINYGLTF_COMPONENT_TYPE_BYTE);
   EXPECT_TRUE(normal.normalized);
+}
+
+}  // namespace
+}  // namespace knitc
+
+namespace knitc {
+namespace {
+
+// A .glb's JSON and binary chunk.
+std::pair<nlohmann::json, std::string> chunks(const std::string& glb) {
+  auto u32 = [&](std::size_t at) {
+    std::uint32_t v;
+    std::memcpy(&v, glb.data() + at, 4);
+    return v;
+  };
+  const std::uint32_t json_length = u32(12);
+  const auto doc = nlohmann::json::parse(glb.substr(20, json_length));
+  const std::size_t bin = 20 + json_length;
+  return {doc, glb.substr(bin + 8, u32(bin))};
+}
+
+TEST(Gltf, MeshoptViewsDecodeToTheUncompressedBytes) {
+  const Pattern p = runtime::run_pattern(
+                        "pattern { gauge = { stitches = 22, rows = 30 }, yarns = { A = { diameter = 1 } } }\ncast_on(6)\nrows(3, \"k\")\n",
+                        "t.lua")
+                        .pattern;
+  for (const View view : {View::surface, View::wireframe}) {
+    CompileOptions o;
+    o.view = view;
+    const Fabric f = compile(p, o);
+    const auto [plain_doc, plain] = chunks(writers::glb(f.mesh, "t", {true, false}));
+    const auto [doc, packed] = chunks(writers::glb(f.mesh, "t", {true, true}));
+    EXPECT_LT(packed.size(), plain.size() / 2);
+    EXPECT_EQ(doc["buffers"][1]["byteLength"], plain.size());
+    ASSERT_EQ(doc["bufferViews"].size(), plain_doc["bufferViews"].size());
+    for (std::size_t i = 0; i < doc["bufferViews"].size(); ++i) {
+      const auto& v = doc["bufferViews"][i];
+      const auto& ext = v["extensions"]["EXT_meshopt_compression"];
+      const std::size_t count = ext["count"], stride = ext["byteStride"];
+      const std::size_t at = ext["byteOffset"], length = ext["byteLength"];
+      const auto* src = reinterpret_cast<const unsigned char*>(packed.data() + at);
+      std::string decoded(count * stride, '\0');
+      int rc = -1;
+      if (ext["mode"] == "ATTRIBUTES") rc = meshopt_decodeVertexBuffer(decoded.data(), count, stride, src, length);
+      else if (ext["mode"] == "TRIANGLES") rc = meshopt_decodeIndexBuffer(decoded.data(), count, stride, src, length);
+      else rc = meshopt_decodeIndexSequence(decoded.data(), count, stride, src, length);
+      ASSERT_EQ(rc, 0) << "view " << i;
+      const std::size_t plain_at = plain_doc["bufferViews"][i]["byteOffset"];
+      const std::string expected = plain.substr(plain_at, decoded.size());
+      if (ext["mode"] != "TRIANGLES") {
+        EXPECT_TRUE(decoded == expected) << "view " << i;
+        continue;
+      }
+      // The index codec keeps every triangle and its winding but may start it at another corner.
+      std::size_t same = 0;
+      for (std::size_t t = 0; t < count / 3; ++t) {
+        std::uint32_t a[3], b[3];
+        std::memcpy(a, decoded.data() + 12 * t, 12);
+        std::memcpy(b, expected.data() + 12 * t, 12);
+        for (int r = 0; r < 3; ++r) same += a[0] == b[r] && a[1] == b[(r + 1) % 3] && a[2] == b[(r + 2) % 3];
+      }
+      EXPECT_EQ(same, count / 3) << "view " << i;
+      EXPECT_EQ(v["byteOffset"], plain_at);
+    }
+  }
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include <glm/common.hpp>
+#include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
 
 #include "writers/writers.hpp"
@@ -44,7 +45,12 @@ struct Block {
   // and translation), normals as normalised int8; 4-byte aligned elements.
   bool quantized = false;
   glm::vec3 lo{0.0f}, step{1.0f};  // mm: position = lo + q * step
+  std::size_t element = 4;         // bytes per vertex (or per index)
+  std::size_t count = 0;
 };
+
+// A block's bytes as the file holds them uncompressed (for meshopt to encode).
+std::string raw_bytes(const Block& b);
 
 std::uint16_t quantize_position(float v, float lo, float step) {
   return static_cast<std::uint16_t>(std::clamp(std::lround((v - lo) / step), 0L, 65535L));
@@ -112,6 +118,14 @@ void put_u32(std::ostream& out, std::uint32_t v) {
   out.write(reinterpret_cast<const char*>(b), 4);
 }
 
+std::string raw_bytes(const Block& b) {
+  std::ostringstream out;
+  write_block(b, out);
+  std::string bytes = std::move(out).str();
+  bytes.resize(b.bytes);  // without the padding
+  return bytes;
+}
+
 }  // namespace
 
 void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out, const GlbOptions& options) {
@@ -163,7 +177,8 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
   std::size_t offset = 0;
   auto add = [&](const mesh::Primitive& p, Block::What what, std::size_t bytes, int target, json accessor,
                  std::size_t stride = 0) {
-    blocks.push_back({offset, bytes, &p, what, options.quantize, box_lo, step});
+    const std::size_t count = accessor["count"].get<std::size_t>();
+    blocks.push_back({offset, bytes, &p, what, options.quantize, box_lo, step, count == 0 ? 4 : bytes / count, count});
     json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", target}};
     if (stride != 0) view["byteStride"] = stride;
     views.push_back(std::move(view));
@@ -222,12 +237,54 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
   }
   doc["meshes"] = json::array({{{"name", "fabric"}, {"primitives", std::move(primitives)}}});
   doc["accessors"] = std::move(accessors);
+  // EXT_meshopt_compression: each view's bytes encoded by meshoptimizer into the binary
+  // chunk; the uncompressed layout stays as a fallback buffer with no data.
+  std::vector<std::string> encoded;
+  std::size_t binary = offset;
+  if (options.meshopt) {
+    binary = 0;
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+      const Block& b = blocks[i];
+      const std::string raw = raw_bytes(b);
+      std::string blob;
+      const char* mode = "ATTRIBUTES";
+      if (b.what == Block::What::indices) {
+        const auto* indices = reinterpret_cast<const unsigned int*>(raw.data());
+        const std::size_t vertices = b.primitive->positions.size();
+        if (b.primitive->mode == mesh::Mode::triangles) {
+          mode = "TRIANGLES";
+          blob.resize(meshopt_encodeIndexBufferBound(b.count, vertices));
+          blob.resize(meshopt_encodeIndexBuffer(reinterpret_cast<unsigned char*>(blob.data()), blob.size(), indices, b.count));
+        } else {
+          mode = "INDICES";
+          blob.resize(meshopt_encodeIndexSequenceBound(b.count, vertices));
+          blob.resize(meshopt_encodeIndexSequence(reinterpret_cast<unsigned char*>(blob.data()), blob.size(), indices, b.count));
+        }
+      } else {
+        blob.resize(meshopt_encodeVertexBufferBound(b.count, b.element));
+        blob.resize(meshopt_encodeVertexBuffer(reinterpret_cast<unsigned char*>(blob.data()), blob.size(), raw.data(), b.count,
+                                               b.element));
+        views[i]["byteStride"] = b.element;
+      }
+      views[i]["buffer"] = 1;
+      views[i]["extensions"]["EXT_meshopt_compression"] = {{"buffer", 0},        {"byteOffset", binary},
+                                                           {"byteLength", blob.size()}, {"byteStride", b.element},
+                                                           {"mode", mode},       {"count", b.count}};
+      binary += padded(blob.size());
+      encoded.push_back(std::move(blob));
+    }
+    doc["extensionsUsed"].push_back("EXT_meshopt_compression");
+    doc["extensionsRequired"].push_back("EXT_meshopt_compression");
+    doc["buffers"] = json::array({{{"byteLength", binary}},
+                                  {{"byteLength", offset}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}});
+  } else {
+    doc["buffers"] = json::array({{{"byteLength", offset}}});
+  }
   doc["bufferViews"] = std::move(views);
-  doc["buffers"] = json::array({{{"byteLength", offset}}});
 
   std::string text = doc.dump();
   text.resize(padded(text.size()), ' ');  // the JSON chunk is padded with spaces
-  const std::size_t total = 12 + 8 + text.size() + 8 + offset;
+  const std::size_t total = 12 + 8 + text.size() + 8 + binary;
   if (total > std::numeric_limits<std::uint32_t>::max())
     throw std::runtime_error("the mesh is over the 4 GiB a .glb can hold; knit a smaller piece or use --quality draft");
   out.write("glTF", 4);
@@ -236,9 +293,17 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
   put_u32(out, static_cast<std::uint32_t>(text.size()));
   put_u32(out, 0x4E4F534Au);  // JSON
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  put_u32(out, static_cast<std::uint32_t>(offset));
+  put_u32(out, static_cast<std::uint32_t>(binary));
   put_u32(out, 0x004E4942u);  // BIN
-  for (const Block& b : blocks) write_block(b, out);
+  if (options.meshopt) {
+    static constexpr char zeros[4] = {};
+    for (const std::string& blob : encoded) {
+      out.write(blob.data(), static_cast<std::streamsize>(blob.size()));
+      out.write(zeros, static_cast<std::streamsize>(padded(blob.size()) - blob.size()));
+    }
+  } else {
+    for (const Block& b : blocks) write_block(b, out);
+  }
 }
 
 std::string glb(const mesh::Mesh& mesh, const std::string& generator, const GlbOptions& options) {

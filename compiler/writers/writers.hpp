@@ -20,8 +20,11 @@ namespace knitc::writers {
 // With quantize (KHR_mesh_quantization, a required extension): positions as uint16 on a
 // grid of the mesh's box in 65535 steps per axis (the node's scale and translation map it
 // back to metres; about 1.2 micrometres on an 8 cm swatch), normals as normalised int8.
+// With meshopt (EXT_meshopt_compression, required): every buffer view encoded by
+// meshoptimizer, the uncompressed layout kept as a fallback buffer without data.
 struct GlbOptions {
   bool quantize = false;
+  bool meshopt = false;
 };
 void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out, const GlbOptions& options = {});
 std::string glb(const mesh::Mesh& mesh, const std::string& generator, const GlbOptions& options = {});
