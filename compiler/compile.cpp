@@ -119,48 +119,62 @@ mesh::Mesh build_mesh(const Pattern& pattern, const std::vector<CurvePiece>& pie
     }
     return out;
   }
-  // Each piece's tubes on their own (in parallel), then one primitive per yarn, the
-  // pieces in order: the same bytes for any thread count.
-  std::vector<mesh::Primitive> tubes(pieces.size());
+  auto sides_of = [&](const Yarn& yarn) {
+    // A ply is a fraction of the yarn's width: about half the sides do.
+    return yarn.section == Section::plied ? std::max(5, (options.sides + 1) / 2) : options.sides;
+  };
+  auto strand_count = [](const Yarn& yarn) { return yarn.section == Section::plied ? yarn.plies : 1; };
+  if (mode == mesh::Mode::triangles) {
+    // Every piece's place in its yarn's primitive is known from its sample count: the
+    // arrays are sized once and each piece's tubes are written straight into them, in
+    // parallel, with the same bytes for any thread count.
+    std::vector<std::size_t> vertex_at(pieces.size()), index_at(pieces.size());
+    std::vector<mesh::Primitive> by_yarn(pattern.yarns.size());
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const Yarn& yarn = pattern.yarns[pieces[i].path.yarn];
+      mesh::Primitive& prim = by_yarn[pieces[i].path.yarn];
+      const auto size = sweep::tube_size(pieces[i].samples.size(), sides_of(yarn), static_cast<std::size_t>(strand_count(yarn)));
+      vertex_at[i] = prim.positions.size();
+      index_at[i] = prim.indices.size();
+      prim.positions.resize(prim.positions.size() + size.vertices);  // capacity is set below, before any data
+      prim.indices.resize(prim.indices.size() + size.indices);
+    }
+    for (std::size_t y = 0; y < by_yarn.size(); ++y) {
+      by_yarn[y].material = material_of[y];
+      by_yarn[y].mode = mode;
+      by_yarn[y].normals.resize(by_yarn[y].positions.size());
+      by_yarn[y].uvs.resize(by_yarn[y].positions.size());
+    }
+    parallel_for(pieces.size(), thread_count(options.threads), [&](std::size_t i) {
+      const CurvePiece& p = pieces[i];
+      const Yarn& yarn = pattern.yarns[p.path.yarn];
+      const auto strands = sweep::strands(p.frames, p.arc_length, cross_section(yarn));
+      sweep::write_tubes(strands, p.arc_length, sides_of(yarn), by_yarn[p.path.yarn], vertex_at[i], index_at[i]);
+    });
+    for (auto& prim : by_yarn) {
+      if (!prim.indices.empty()) out.primitives.push_back(std::move(prim));
+    }
+    return out;
+  }
+  // Wireframes: each piece's lines, then one primitive per yarn, the pieces in order.
+  std::vector<mesh::Primitive> lines(pieces.size());
   parallel_for(pieces.size(), thread_count(options.threads), [&](std::size_t i) {
     const CurvePiece& p = pieces[i];
-    mesh::Primitive& prim = tubes[i];
-    prim.mode = mode;
     const Yarn& yarn = pattern.yarns[p.path.yarn];
-    const auto strands = sweep::strands(p.frames, p.arc_length, cross_section(yarn));
-    // A ply is a fraction of the yarn's width: about half the sides do.
-    const int sides = yarn.section == Section::plied ? std::max(5, (options.sides + 1) / 2) : options.sides;
-    if (mode == mesh::Mode::triangles) sweep::append_tubes(strands, p.arc_length, sides, prim);
-    else sweep::append_wireframe(strands, sides, prim);
+    lines[i].mode = mode;
+    sweep::append_wireframe(sweep::strands(p.frames, p.arc_length, cross_section(yarn)), sides_of(yarn), lines[i]);
   });
   for (std::size_t y = 0; y < pattern.yarns.size(); ++y) {
     mesh::Primitive prim;
     prim.material = material_of[y];
     prim.mode = mode;
-    std::size_t vertices = 0, indices = 0;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       if (pieces[i].path.yarn != static_cast<int>(y)) continue;
-      vertices += tubes[i].positions.size();
-      indices += tubes[i].indices.size();
-    }
-    if (indices == 0) continue;
-    prim.positions.reserve(vertices);
-    prim.indices.reserve(indices);
-    if (mode == mesh::Mode::triangles) {
-      prim.normals.reserve(vertices);
-      prim.uvs.reserve(vertices);
-    }
-    for (std::size_t i = 0; i < pieces.size(); ++i) {
-      if (pieces[i].path.yarn != static_cast<int>(y)) continue;
-      mesh::Primitive& t = tubes[i];
       const auto offset = static_cast<std::uint32_t>(prim.positions.size());
-      prim.positions.insert(prim.positions.end(), t.positions.begin(), t.positions.end());
-      prim.normals.insert(prim.normals.end(), t.normals.begin(), t.normals.end());
-      prim.uvs.insert(prim.uvs.end(), t.uvs.begin(), t.uvs.end());
-      for (std::uint32_t index : t.indices) prim.indices.push_back(index + offset);
-      t = mesh::Primitive{};  // free as we go
+      prim.positions.insert(prim.positions.end(), lines[i].positions.begin(), lines[i].positions.end());
+      for (std::uint32_t index : lines[i].indices) prim.indices.push_back(index + offset);
     }
-    out.primitives.push_back(std::move(prim));
+    if (!prim.indices.empty()) out.primitives.push_back(std::move(prim));
   }
   return out;
 }

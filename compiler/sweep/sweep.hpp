@@ -76,6 +76,18 @@ std::vector<Strand> strands(const Frames& frames, std::span<const double> arc_le
 // by position closes each surface.
 void append_tubes(std::span<const Strand> strands, std::span<const double> arc_length, int sides, mesh::Primitive& out);
 
+// The vertices and indices append_tubes adds for `strands` strands of `rings` rings.
+struct TubeSize {
+  std::size_t vertices, indices;
+};
+TubeSize tube_size(std::size_t rings, int sides, std::size_t strands);
+
+// As append_tubes, into arrays already sized: vertices from `vertex_offset`, indices from
+// `index_offset` (indices count from the primitive's start). Disjoint ranges may be
+// written from different threads.
+void write_tubes(std::span<const Strand> strands, std::span<const double> arc_length, int sides, mesh::Primitive& out,
+                 std::size_t vertex_offset, std::size_t index_offset);
+
 // Appends the strands' rings and long edges as a LINES primitive, like the seed paper's
 // wireframe figure.
 void append_wireframe(std::span<const Strand> strands, int sides, mesh::Primitive& out);

@@ -53,53 +53,65 @@ Frames ply(const Frames& f, std::span<const double> s, int k, int n, double offs
   return p;
 }
 
-// One strand's rings: `sides` + 1 vertices each (the last repeats the first, v = 1).
-void append_rings(const Strand& strand, std::span<const double> s, int sides, mesh::Primitive& out, bool surface) {
-  const Frames& f = strand.frames;
-  std::vector<double> cosines(sides), sines(sides);
-  for (int k = 0; k < sides; ++k) {
-    const double theta = 2.0 * std::numbers::pi * k / sides;
-    cosines[k] = std::cos(theta);
-    sines[k] = std::sin(theta);
-  }
-  const double a = strand.along_normal, b = strand.along_binormal;
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    const auto first = out.positions.size();
+struct Trig {
+  std::vector<double> cosines, sines;
+  explicit Trig(int sides) : cosines(sides), sines(sides) {
     for (int k = 0; k < sides; ++k) {
-      out.positions.emplace_back(f.origin[i] + a * cosines[k] * f.normal[i] + b * sines[k] * f.binormal[i]);
-      if (!surface) continue;
-      // The ellipse's outward normal is along (cos / a, sin / b), that is (b cos, a sin).
-      out.normals.emplace_back(glm::normalize(glm::vec3(b * cosines[k] * f.normal[i] + a * sines[k] * f.binormal[i])));
-      out.uvs.emplace_back(static_cast<float>(s[i]), static_cast<float>(k) / static_cast<float>(sides));
+      const double theta = 2.0 * std::numbers::pi * k / sides;
+      cosines[k] = std::cos(theta);
+      sines[k] = std::sin(theta);
     }
-    if (!surface) continue;
-    const glm::vec3 seam_position = out.positions[first], seam_normal = out.normals[first];
-    out.positions.push_back(seam_position);
-    out.normals.push_back(seam_normal);
-    out.uvs.emplace_back(static_cast<float>(s[i]), 1.0f);
   }
+};
+
+// Writes into arrays sized in advance: each tube lands at its own offsets, so pieces can
+// be written in parallel into one primitive without a copy.
+struct Cursor {
+  mesh::Primitive& out;
+  std::size_t vertex, index;
+  std::uint32_t put(const glm::vec3& p, const glm::vec3& n, const glm::vec2& uv) {
+    out.positions[vertex] = p;
+    out.normals[vertex] = n;
+    out.uvs[vertex] = uv;
+    return static_cast<std::uint32_t>(vertex++);
+  }
+  void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    out.indices[index++] = a;
+    out.indices[index++] = b;
+    out.indices[index++] = c;
+  }
+};
+
+// One strand's rings: `sides` + 1 vertices each (the last repeats the first, v = 1).
+std::uint32_t write_rings(const Strand& strand, std::span<const double> s, const Trig& trig, Cursor& c) {
+  const Frames& f = strand.frames;
+  const int sides = static_cast<int>(trig.cosines.size());
+  const double a = strand.along_normal, b = strand.along_binormal;
+  const auto first = static_cast<std::uint32_t>(c.vertex);
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const std::uint32_t ring = static_cast<std::uint32_t>(c.vertex);
+    for (int k = 0; k < sides; ++k) {
+      const double ck = trig.cosines[k], sk = trig.sines[k];
+      // The ellipse's outward normal is along (cos / a, sin / b), that is (b cos, a sin).
+      c.put(glm::vec3(f.origin[i] + a * ck * f.normal[i] + b * sk * f.binormal[i]),
+            glm::normalize(glm::vec3(b * ck * f.normal[i] + a * sk * f.binormal[i])),
+            glm::vec2(static_cast<float>(s[i]), static_cast<float>(k) / static_cast<float>(sides)));
+    }
+    c.put(c.out.positions[ring], c.out.normals[ring], glm::vec2(static_cast<float>(s[i]), 1.0f));
+  }
+  return first;
 }
 
 // A flat cap: a centre vertex and a copy of the ring's rim with the cap's normal.
-void append_cap(const Frames& f, std::size_t ring, std::uint32_t rim, int sides, bool at_start, mesh::Primitive& out) {
+void write_cap(const Frames& f, std::size_t ring, std::uint32_t rim, int sides, bool at_start, Cursor& c) {
   const glm::vec3 normal(at_start ? -f.tangent[ring] : f.tangent[ring]);
-  const auto centre = static_cast<std::uint32_t>(out.positions.size());
-  const glm::vec2 centre_uv(out.uvs[rim].x, 0.5f);
-  out.positions.emplace_back(f.origin[ring]);
-  out.normals.push_back(normal);
-  out.uvs.push_back(centre_uv);
-  for (int k = 0; k < sides; ++k) {
-    const glm::vec3 p = out.positions[rim + k];  // copies: push_back may reallocate
-    const glm::vec2 uv = out.uvs[rim + k];
-    out.positions.push_back(p);
-    out.normals.push_back(normal);
-    out.uvs.push_back(uv);
-  }
+  const std::uint32_t centre = c.put(glm::vec3(f.origin[ring]), normal, glm::vec2(c.out.uvs[rim].x, 0.5f));
+  for (int k = 0; k < sides; ++k) c.put(c.out.positions[rim + k], normal, c.out.uvs[rim + k]);
   for (int k = 0; k < sides; ++k) {
     const std::uint32_t a = centre + 1 + k, b = centre + 1 + (k + 1) % sides;
     // Counter-clockwise seen from outside: from -t at the start, from +t at the end.
-    if (at_start) out.indices.insert(out.indices.end(), {centre, b, a});
-    else out.indices.insert(out.indices.end(), {centre, a, b});
+    if (at_start) c.triangle(centre, b, a);
+    else c.triangle(centre, a, b);
   }
 }
 
@@ -128,35 +140,61 @@ std::vector<Strand> strands(const Frames& f, std::span<const double> s, const Cr
   return {};
 }
 
-void append_tubes(std::span<const Strand> strands, std::span<const double> s, int sides, mesh::Primitive& out) {
+TubeSize tube_size(std::size_t rings, int sides, std::size_t strands) {
+  const auto n = static_cast<std::size_t>(sides);
+  return {strands * (rings * (n + 1) + 2 * (n + 1)), strands * ((rings - 1) * n * 6 + 2 * n * 3)};
+}
+
+void write_tubes(std::span<const Strand> strands, std::span<const double> s, int sides, mesh::Primitive& out,
+                 std::size_t vertex_offset, std::size_t index_offset) {
   assert(sides >= 3 && out.mode == mesh::Mode::triangles);
-  const int stride = sides + 1;
+  const Trig trig(sides);
+  const auto stride = static_cast<std::uint32_t>(sides + 1);
+  Cursor c{out, vertex_offset, index_offset};
   for (const Strand& strand : strands) {
     const Frames& f = strand.frames;
     assert(f.size() >= 2 && f.size() == s.size());
-    const auto base = static_cast<std::uint32_t>(out.positions.size());
+    const std::uint32_t base = write_rings(strand, s, trig, c);
     const auto rings = f.size();
-    append_rings(strand, s, sides, out, true);
     for (std::size_t i = 0; i + 1 < rings; ++i) {
-      const auto row = base + static_cast<std::uint32_t>(i * stride);
+      const auto row = base + static_cast<std::uint32_t>(i) * stride;
       for (int k = 0; k < sides; ++k) {
         // (i, k), (i, k+1), (i+1, k), (i+1, k+1): the side direction crossed with the
         // tangent points outward.
-        const std::uint32_t a = row + k, b = row + k + 1, c = a + stride, d = b + stride;
-        out.indices.insert(out.indices.end(), {a, b, c, b, d, c});
+        const std::uint32_t a = row + k, b = row + k + 1, cc = a + stride, d = b + stride;
+        c.triangle(a, b, cc);
+        c.triangle(b, d, cc);
       }
     }
-    append_cap(f, 0, base, sides, true, out);
-    append_cap(f, rings - 1, base + static_cast<std::uint32_t>((rings - 1) * stride), sides, false, out);
+    write_cap(f, 0, base, sides, true, c);
+    write_cap(f, rings - 1, base + static_cast<std::uint32_t>(rings - 1) * stride, sides, false, c);
   }
+  assert(c.vertex - vertex_offset == tube_size(s.size(), sides, strands.size()).vertices);
+  assert(c.index - index_offset == tube_size(s.size(), sides, strands.size()).indices);
+}
+
+void append_tubes(std::span<const Strand> strands, std::span<const double> s, int sides, mesh::Primitive& out) {
+  const TubeSize size = tube_size(s.size(), sides, strands.size());
+  const std::size_t v = out.positions.size(), i = out.indices.size();
+  out.positions.resize(v + size.vertices);
+  out.normals.resize(v + size.vertices);
+  out.uvs.resize(v + size.vertices);
+  out.indices.resize(i + size.indices);
+  write_tubes(strands, s, sides, out, v, i);
 }
 
 void append_wireframe(std::span<const Strand> strands, int sides, mesh::Primitive& out) {
   assert(sides >= 3 && out.mode == mesh::Mode::lines);
+  const Trig trig(sides);
   for (const Strand& strand : strands) {
     const Frames& f = strand.frames;
     const auto base = static_cast<std::uint32_t>(out.positions.size());
-    append_rings(strand, {}, sides, out, false);
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      for (int k = 0; k < sides; ++k) {
+        out.positions.emplace_back(f.origin[i] + strand.along_normal * trig.cosines[k] * f.normal[i] +
+                                   strand.along_binormal * trig.sines[k] * f.binormal[i]);
+      }
+    }
     for (std::size_t i = 0; i < f.size(); ++i) {
       const auto row = base + static_cast<std::uint32_t>(i * sides);
       for (int k = 0; k < sides; ++k) {
