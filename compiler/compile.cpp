@@ -129,21 +129,24 @@ mesh::Mesh build_mesh(const Pattern& pattern, const std::vector<CurvePiece>& pie
     // arrays are sized once and each piece's tubes are written straight into them, in
     // parallel, with the same bytes for any thread count.
     std::vector<std::size_t> vertex_at(pieces.size()), index_at(pieces.size());
-    std::vector<mesh::Primitive> by_yarn(pattern.yarns.size());
+    std::vector<std::size_t> vertices(pattern.yarns.size(), 0), indices(pattern.yarns.size(), 0);
     for (std::size_t i = 0; i < pieces.size(); ++i) {
-      const Yarn& yarn = pattern.yarns[pieces[i].path.yarn];
-      mesh::Primitive& prim = by_yarn[pieces[i].path.yarn];
+      const int y = pieces[i].path.yarn;
+      const Yarn& yarn = pattern.yarns[y];
       const auto size = sweep::tube_size(pieces[i].samples.size(), sides_of(yarn), static_cast<std::size_t>(strand_count(yarn)));
-      vertex_at[i] = prim.positions.size();
-      index_at[i] = prim.indices.size();
-      prim.positions.resize(prim.positions.size() + size.vertices);  // capacity is set below, before any data
-      prim.indices.resize(prim.indices.size() + size.indices);
+      vertex_at[i] = vertices[y];
+      index_at[i] = indices[y];
+      vertices[y] += size.vertices;
+      indices[y] += size.indices;
     }
-    for (std::size_t y = 0; y < by_yarn.size(); ++y) {
+    std::vector<mesh::Primitive> by_yarn(pattern.yarns.size());
+    for (std::size_t y = 0; y < by_yarn.size(); ++y) {  // one allocation per array
       by_yarn[y].material = material_of[y];
       by_yarn[y].mode = mode;
-      by_yarn[y].normals.resize(by_yarn[y].positions.size());
-      by_yarn[y].uvs.resize(by_yarn[y].positions.size());
+      by_yarn[y].positions.resize(vertices[y]);
+      by_yarn[y].normals.resize(vertices[y]);
+      by_yarn[y].uvs.resize(vertices[y]);
+      by_yarn[y].indices.resize(indices[y]);
     }
     parallel_for(pieces.size(), thread_count(options.threads), [&](std::size_t i) {
       const CurvePiece& p = pieces[i];
