@@ -13,6 +13,17 @@
 namespace knitc {
 namespace {
 
+// The file as tinygltf's loader reads it; a failure to load fails the test.
+tinygltf::Model load(const std::string& bytes) {
+  tinygltf::Model m;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  const bool ok = loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                              static_cast<unsigned int>(bytes.size()));
+  EXPECT_TRUE(ok) << err;
+  return m;
+}
+
 TEST(Gltf, ReadsBackWithTheMeshItWasWrittenFrom) {
   const Pattern p = runtime::run_pattern(
                         "pattern { gauge = { stitches = 22, rows = 30 }, yarns = { A = { diameter = 1, color = \"#ff0000\" },\n"
@@ -20,13 +31,7 @@ TEST(Gltf, ReadsBackWithTheMeshItWasWrittenFrom) {
                         "t.lua")
                         .pattern;
   const Fabric f = compile(p, CompileOptions{});
-  const std::string bytes = writers::glb(f.mesh, "knitc test");
-  tinygltf::Model m;
-  tinygltf::TinyGLTF loader;
-  std::string err, warn;
-  ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                          static_cast<unsigned int>(bytes.size())))
-      << err;
+  const tinygltf::Model m = load(writers::glb(f.mesh, "knitc test"));
   EXPECT_EQ(m.asset.generator, "knitc test");
   ASSERT_EQ(m.meshes.size(), 1u);
   ASSERT_EQ(m.meshes[0].primitives.size(), 2u);
@@ -66,12 +71,7 @@ TEST(Gltf, QuantisedPositionsComeBackWithinHalfAStep) {
   const Fabric f = compile(p, CompileOptions{});
   const std::string bytes = writers::glb(f.mesh, "knitc test", {true});
   EXPECT_LT(bytes.size(), writers::glb(f.mesh, "knitc test").size() * 4 / 5);
-  tinygltf::Model m;
-  tinygltf::TinyGLTF loader;
-  std::string err, warn;
-  ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                          static_cast<unsigned int>(bytes.size())))
-      << err;
+  const tinygltf::Model m = load(bytes);
   ASSERT_EQ(m.extensionsRequired, std::vector<std::string>{"KHR_mesh_quantization"});
   const auto& node = m.nodes[0];
   ASSERT_EQ(node.scale.size(), 3u);
