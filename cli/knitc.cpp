@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 1 a problem in the pattern, 2 bad command-line use.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <mutex>
 
 #include <unistd.h>
@@ -331,6 +332,17 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return exit_usage;
+  }
+  // An output must not overwrite the pattern it comes from.
+  for (const Args* args : {&b, &r, &n}) {
+    if (args->output.empty() || args->pattern.empty()) continue;
+    std::error_code ec;
+    const auto out = std::filesystem::weakly_canonical(args->output, ec);
+    const auto in = std::filesystem::weakly_canonical(args->pattern, ec);
+    if (!ec && out == in) {
+      fmt::print(stderr, "knitc: -o {} would overwrite the pattern itself\n", args->output);
+      return exit_usage;
+    }
   }
   // --quality sets the density; --sides and --tolerance, when given, win over it.
   for (auto [cmd, args] : {std::pair{build_cmd, &b}, std::pair{render_cmd, &r}, std::pair{snapshot_cmd, &n},

@@ -162,7 +162,9 @@ TEST(Cli, CommandLineMisuseExitsTwo) {
         "build patterns/jersey.lua" + out + " --view hologram", "build patterns/jersey.lua" + out + " --sides 2",
         "build patterns/jersey.lua" + out + " --tolerance 0", "build patterns/jersey.lua" + out + " --loop-model lumpy",
         "build no/such/pattern.lua" + out, "build patterns/jersey.lua -o " + quoted(dir / "no/such/dir/x.glb"),
-        "build patterns/jersey.lua" + out + " --centreline " + quoted(dir / "x.glb")}) {
+        "build patterns/jersey.lua" + out + " --centreline " + quoted(dir / "x.glb"),
+        std::string("build patterns/jersey.lua -o patterns/jersey.lua"),
+        std::string("render patterns/jersey.lua -o ./patterns/../patterns/jersey.lua")}) {
     const auto r = test::run_knitc(args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_FALSE(r.err.empty()) << args;
