@@ -335,13 +335,15 @@ int run(int argc, char** argv) {
   }
   // An output must not overwrite the pattern it comes from.
   for (const Args* args : {&b, &r, &n}) {
-    if (args->output.empty() || args->pattern.empty()) continue;
-    std::error_code ec;
-    const auto out = std::filesystem::weakly_canonical(args->output, ec);
-    const auto in = std::filesystem::weakly_canonical(args->pattern, ec);
-    if (!ec && out == in) {
-      fmt::print(stderr, "knitc: -o {} would overwrite the pattern itself\n", args->output);
-      return exit_usage;
+    for (const std::string* output : {&args->output, &args->centreline}) {
+      if (output->empty() || args->pattern.empty()) continue;
+      std::error_code ec;
+      const auto out = std::filesystem::weakly_canonical(*output, ec);
+      const auto in = std::filesystem::weakly_canonical(args->pattern, ec);
+      if (!ec && out == in) {
+        fmt::print(stderr, "knitc: {} would overwrite the pattern itself\n", *output);
+        return exit_usage;
+      }
     }
   }
   // --quality sets the density; --sides and --tolerance, when given, win over it.
