@@ -96,13 +96,8 @@ std::vector<std::string> sorted_keys(lua_State* L, int index, const std::string&
 }
 
 void only_known_keys(lua_State* L, int index, const std::string& table, std::initializer_list<const char*> known) {
-  for (const std::string& key : sorted_keys(L, index, table)) {
-    if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) {
-      std::string list;
-      for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
-      fail(L, "unknown field '" + key + "' in " + table + "; known fields: " + list);
-    }
-  }
+  sorted_keys(L, index, table);  // every key must be a name
+  only_known_fields(L, index, table, known);
 }
 
 void only_known_fields(lua_State* L, int index, const std::string& table, std::initializer_list<const char*> known) {
