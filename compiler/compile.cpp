@@ -2,6 +2,7 @@
 
 #include "parallel.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cassert>
 #include <cmath>
@@ -62,7 +63,8 @@ CurvePiece trace_curve(yarn_paths::Piece path, const Pattern& pattern, const Com
   io.parametrisation = options.parametrisation;
   piece.curve = nurbs::interpolate(piece.path.data_points, io);
 
-  // Sample loop by loop, so every loop join is a sample and each loop owns its samples.
+  // Sample span by span between the loops' ends, so every loop join is a sample and each
+  // loop owns its samples; floats, turns and tails are spans of their own.
   const Yarn& yarn = pattern.yarns[piece.path.yarn];
   const double d = yarn.diameter;
   const double tolerance = options.chord_tolerance * d;
@@ -70,18 +72,33 @@ CurvePiece trace_curve(yarn_paths::Piece path, const Pattern& pattern, const Com
   const double max_step = yarn.section == Section::plied && yarn.twist > 0.0 ? (100.0 / yarn.twist) / 12.0
                                                                              : std::numeric_limits<double>::infinity();
   const auto& u = piece.curve.parameters;
-  piece.loop_samples.push_back(0);
-  for (std::size_t j = 0; j < piece.path.loops.size(); ++j) {
-    const double u0 = u[j * yarn_paths::points_per_loop], u1 = u[(j + 1) * yarn_paths::points_per_loop];
-    const auto s = sweep::sample_parameters(piece.curve.curve, u0, u1, tolerance, 0.5 * d, max_step);
-    piece.samples.insert(piece.samples.end(), s.begin() + (j == 0 ? 0 : 1), s.end());
-    piece.loop_samples.push_back(piece.samples.size() - 1);
+  const std::size_t last = u.size() - 1;
+  std::vector<std::size_t> breaks = {0, last};
+  for (std::size_t first : piece.path.loop_first) {
+    breaks.push_back(first);
+    breaks.push_back(first + yarn_paths::points_per_loop);
   }
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+  std::vector<std::size_t> sample_at(u.size(), 0);  // the sample at each break
+  piece.samples.push_back(u[0]);
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const auto s = sweep::sample_parameters(piece.curve.curve, u[breaks[k]], u[breaks[k + 1]], tolerance, 0.5 * d, max_step);
+    piece.samples.insert(piece.samples.end(), s.begin() + 1, s.end());
+    sample_at[breaks[k + 1]] = piece.samples.size() - 1;
+  }
+  for (std::size_t first : piece.path.loop_first)
+    piece.loop_samples.emplace_back(sample_at[first], sample_at[first + yarn_paths::points_per_loop]);
   piece.frames = sweep::frames(piece.curve.curve, piece.samples, frame_kind(options.loop_model));
   piece.arc_length.assign(piece.samples.size(), 0.0);
   for (std::size_t i = 1; i < piece.samples.size(); ++i)
     piece.arc_length[i] = piece.arc_length[i - 1] + nurbs::segment_length(piece.curve.curve, piece.samples[i - 1], piece.samples[i]);
   return piece;
+}
+
+// The script's file name for messages, whatever the pattern holds.
+std::string source_file(const Pattern& pattern) {
+  return pattern.courses.empty() ? pattern.name : pattern.courses.front().where.file;
 }
 
 mesh::Mode primitive_mode(View view) {
@@ -186,28 +203,25 @@ mesh::Mesh build_mesh(const Pattern& pattern, const std::vector<CurvePiece>& pie
 
 Fabric compile(const Pattern& pattern, const CompileOptions& options) {
   assert(options.sides >= 3 && options.chord_tolerance > 0.0);
-  for (std::size_t row = 0; row < pattern.courses.size(); ++row) {
-    const Course& c = pattern.courses[row];
-    for (const Op& op : c.ops) {
-      if (!layout::can_lay_out(op.stitch))
-        throw CompileError(c.where.file + ":" + std::to_string(c.where.line) + ": row " + std::to_string(row + 1) +
-                           " has " + std::string(stitch(op.stitch).name) +
-                           ", which knitc cannot lay out in 3D yet (only k and p so far); knitc check and knitc chart accept it");
-    }
-  }
-  std::uint64_t loops = 0;
+  std::uint64_t loops = static_cast<std::uint64_t>(pattern.cast_on);
   for (const Course& c : pattern.courses) loops += c.ops.size();
   if (loops > max_loops)
-    throw CompileError(pattern.courses.front().where.file + ": the fabric has " + std::to_string(loops) +
+    throw CompileError(source_file(pattern) + ": the fabric has " + std::to_string(loops) +
                        " loops; knitc lays out at most " + std::to_string(max_loops) + " (knitc check and chart take more)");
   // Before sampling, a cautious estimate (half the rings the plain loop needs, about 55
   // at 1% tolerance, scaling as tolerance^-1/2) turns away the hopeless in a moment.
   const double rings_per_loop = 0.5 * 55.0 * std::sqrt(0.01 / options.chord_tolerance);
   if (static_cast<double>(loops) * rings_per_loop * (options.sides + 1) > static_cast<double>(max_vertices))
-    throw CompileError(pattern.courses.front().where.file + ": " + std::to_string(loops) + " loops at this quality make a mesh " +
+    throw CompileError(source_file(pattern) + ": " + std::to_string(loops) + " loops at this quality make a mesh " +
                        "over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +
                        " million vertices; knit a smaller piece, or use --quality draft");
-  return compile(pattern, layout::lay_out(pattern), options);
+  layout::Layout layout;
+  try {
+    layout = layout::lay_out(pattern);
+  } catch (const std::invalid_argument& e) {  // the runtime checks counts first: a caller's bug
+    throw CompileError(source_file(pattern) + ": " + e.what());
+  }
+  return compile(pattern, std::move(layout), options);
 }
 
 Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptions& options) {
@@ -232,7 +246,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     vertices += strands * (p.samples.size() + 2) * static_cast<std::uint64_t>(options.sides + 1);
   }
   if (vertices > max_vertices)
-    throw CompileError(pattern.courses.front().where.file + ": the mesh would have " + std::to_string(vertices / 1'000'000) +
+    throw CompileError(source_file(pattern) + ": the mesh would have " + std::to_string(vertices / 1'000'000) +
                        " million vertices, over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +
                        " million; knit a smaller piece, or use --quality draft");
   fabric.mesh = build_mesh(pattern, fabric.pieces, options);

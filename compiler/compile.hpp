@@ -50,9 +50,9 @@ struct CurvePiece {
   std::vector<double> samples;  // curve parameters, increasing
   sweep::Frames frames;         // one per sample; frames.origin are the centreline samples
   std::vector<double> arc_length;  // the yarn's length in mm from the piece's start, per sample
-  // Loop j of the piece owns samples [loop_samples[j], loop_samples[j + 1]] (both ends:
-  // loops that meet share their join sample). Size: path.loops.size() + 1.
-  std::vector<std::size_t> loop_samples;
+  // Loop j of the piece owns samples [loop_samples[j].first, loop_samples[j].second]
+  // (both ends: loops that meet share their join sample). Size: path.loops.size().
+  std::vector<std::pair<std::size_t, std::size_t>> loop_samples;
 };
 
 struct Fabric {
@@ -77,7 +77,7 @@ class CompileError : public std::runtime_error {
 };
 
 // Compiles a validated pattern (the runtime validates) into geometry. Throws
-// CompileError for stitches the layout has no template for yet.
+// CompileError for a fabric past the size limits.
 Fabric compile(const Pattern& pattern, const CompileOptions& options);
 // The stages after the layout, on a given one (its loops' data points may be changed):
 // yarn paths, curves, sweep, mesh.

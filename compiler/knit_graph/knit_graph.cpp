@@ -25,17 +25,23 @@ Graph build(const Pattern& pattern) {
     Loop l;
     l.course = 0;
     l.position = i;
+    l.slot = i;
     l.stitch = knit;
     l.yarn = pattern.cast_on_yarn;
     g.loops.push_back(l);
     live.push_back({i});
   }
+  g.needle.push_back(pattern.cast_on);
   std::vector<int> yarn_order(pattern.yarns.size(), 0);
   for (int y = 0; y < static_cast<int>(pattern.yarns.size()); ++y) {
     if (y == pattern.cast_on_yarn) yarn_order[y] = pattern.cast_on;
   }
-  // The cast-on is worked from the right edge: its order along the yarn runs right to left.
-  for (int i = 0; i < pattern.cast_on; ++i) g.loops[i].order = pattern.cast_on - 1 - i;
+  // The cast-on ends where the first row starts: flat work turns at the edge, so a cast-on
+  // under a right-side row (worked from the right edge) runs left to right; in the round
+  // every course, the cast-on too, runs right to left.
+  const bool cast_on_leftwards = pattern.knitting == Knitting::round ||
+                                 (!pattern.courses.empty() && pattern.courses.front().side == Side::wrong);
+  for (int i = 0; i < pattern.cast_on; ++i) g.loops[i].order = cast_on_leftwards ? pattern.cast_on - 1 - i : i;
 
   for (std::size_t c = 0; c < pattern.courses.size(); ++c) {
     const Course& course = pattern.courses[c];
@@ -55,6 +61,7 @@ Graph build(const Pattern& pattern) {
         Loop l;
         l.course = number;
         l.position = position++;
+        l.slot = static_cast<int>(next.size());
         l.stitch = op.stitch;
         l.yarn = op.yarn;
         l.parents = std::move(parents);
@@ -64,9 +71,9 @@ Graph build(const Pattern& pattern) {
       };
       switch (s.family) {
         case StitchFamily::slip:
+          g.floats.push_back({number, static_cast<int>(next.size()), static_cast<int>(next.size()) + s.consumes - 1,
+                              op.yarn, op.stitch == stitch_id("sl wyif")});
           for (int k = 0; k < s.consumes; ++k) next.push_back(live[at + k]);
-          g.floats.push_back({number, static_cast<int>(at), static_cast<int>(at) + s.consumes - 1, op.yarn,
-                              op.stitch == stitch_id("sl wyif")});
           break;
         case StitchFamily::tuck:
           for (int k = 0; k < s.consumes; ++k) {
@@ -77,12 +84,18 @@ Graph build(const Pattern& pattern) {
           break;
         case StitchFamily::no_stitch: break;
         case StitchFamily::cable:
-          for (int j = 0; j < s.produces; ++j) next.push_back({new_loop(live[at + cable_source(s, j)], false)});
+          for (int j = 0; j < s.produces; ++j) {
+            const int made = new_loop(live[at + cable_source(s, j)], false);
+            next.push_back({made});
+          }
           break;
         default: {  // knit, purl, yarn over, decreases: one new loop through all they take
           std::vector<int> parents;
           for (int k = 0; k < s.consumes; ++k) parents.insert(parents.end(), live[at + k].begin(), live[at + k].end());
-          for (int k = 0; k < s.produces; ++k) next.push_back({new_loop(k == 0 ? parents : std::vector<int>{}, false)});
+          for (int k = 0; k < s.produces; ++k) {
+            const int made = new_loop(k == 0 ? parents : std::vector<int>{}, false);
+            next.push_back({made});
+          }
           break;
         }
       }
@@ -94,6 +107,7 @@ Graph build(const Pattern& pattern) {
       Loop& l = g.loops[course.side == Side::right ? first_loop + made - 1 - k : first_loop + k];
       l.order = yarn_order[l.yarn]++;
     }
+    g.needle.push_back(static_cast<int>(next.size()));
     live = std::move(next);
   }
   g.course_first.push_back(static_cast<int>(g.loops.size()));

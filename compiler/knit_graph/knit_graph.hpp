@@ -21,6 +21,7 @@ namespace knitc::knit_graph {
 struct Loop {
   int course = 0;         // 0 is the cast-on; pattern course i is course i + 1
   int position = 0;       // left to right in face view among the loops its course makes
+  int slot = 0;           // the needle position it is on after its course, left to right in face view
   StitchId stitch = 0;    // the op that made it (the cast-on's loops say k)
   int yarn = 0;           // index into Pattern::yarns
   int order = 0;          // place along its yarn, in working order, from 0
@@ -29,7 +30,7 @@ struct Loop {
 };
 
 // A stretch of yarn that passes stitches by without making a loop: a slipped stitch's
-// float, in face-view stitch positions [first, last] of the needle in its course.
+// float, over the needle positions [first, last] (face view) after its course.
 struct Float {
   int course = 0;
   int first = 0, last = 0;
@@ -41,6 +42,7 @@ struct Graph {
   std::vector<Loop> loops;        // the cast-on's, then course by course in face order
   std::vector<int> course_first;  // index of each course's first loop; one more entry at the end
   std::vector<Float> floats;
+  std::vector<int> needle;        // live stitches after each course (the cast-on's first)
   // After the last course: the live stitches, each the loops its needle holds.
   std::vector<std::vector<int>> live;
 };

@@ -1,6 +1,9 @@
 #include "layout/layout.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <numbers>
 
 namespace knitc::layout {
 
@@ -14,9 +17,39 @@ constexpr std::array<glm::dvec3, loop_points> table1 = {{
     {0.7602, 0.4954, 0.9999}, {0.6855, 0.3494, 0.8901}, {0.6507, 0.2035, 0.5966},
     {0.7500, 0.0407, 0.1275}, {1.0000, 0.0000, 0.0000},
 }};
+
+constexpr std::array<double, loop_points> head = {0.0, 0.0, 0.1, 0.3, 0.55, 0.8, 1.0, 1.0, 1.0,
+                                                  1.0, 1.0, 0.8, 0.55, 0.3, 0.1, 0.0, 0.0};
+constexpr std::array<double, loop_points> legs = {0.0, 0.6, 0.9, 0.8, 0.6, 0.4, 0.2, 0.05, 0.0,
+                                                  0.05, 0.2, 0.4, 0.6, 0.8, 0.9, 0.6, 0.0};
+// A crossing loop's feet stay in its parent's head, its own head moves to its new needle
+// position: the whole loop leans, the sinker loops at its feet included.
+constexpr std::array<double, loop_points> feet = {1.0, 1.0, 1.0, 0.9, 0.75, 0.55, 0.35, 0.15, 0.0,
+                                                  0.15, 0.35, 0.55, 0.75, 0.9, 1.0, 1.0, 1.0};
+// Where crossing legs pass in front of or behind each other: most at mid-leg.
+constexpr std::array<double, loop_points> crossing = {0.3, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.2, 0.0,
+                                                      0.2, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.3};
+
+// Of a gathered stitch's parents, the one lying on top: k2tog's left stitch (it leans
+// right), ssk's and sk2p's right one (they lean left), the centre of a cdd.
+std::size_t top_parent(const StitchDef& s, std::size_t parents) {
+  switch (s.lean) {
+    case Lean::left: return parents - 1;
+    case Lean::centre: return parents / 2;
+    default: return 0;
+  }
+}
+
+bool purled(const StitchDef& s) {
+  return s.family == StitchFamily::purl ||
+         (s.family == StitchFamily::decrease && (s.name.front() == 'p' || s.name == "ssp"));
+}
+
 }  // namespace
 
 std::span<const glm::dvec3, loop_points> plain_loop_fractions() { return table1; }
+std::span<const double, loop_points> head_weights() { return head; }
+std::span<const double, loop_points> leg_weights() { return legs; }
 
 std::array<glm::dvec3, loop_points> plain_loop(const Gauge& g) {
   std::array<glm::dvec3, loop_points> p;
@@ -25,39 +58,164 @@ std::array<glm::dvec3, loop_points> plain_loop(const Gauge& g) {
   return p;
 }
 
-bool can_lay_out(StitchId id) {
-  const StitchFamily f = stitch(id).family;
-  return f == StitchFamily::knit || f == StitchFamily::purl;
-}
+Layout lay_out(const Pattern& pattern) { return lay_out(pattern, knit_graph::build(pattern)); }
 
-Layout lay_out(const Pattern& pattern) {
-  Layout layout;
-  layout.courses = static_cast<int>(pattern.courses.size());
-  const auto loop = plain_loop(pattern.gauge);
-  const double W = pattern.gauge.loop_width, C = pattern.gauge.course_spacing();
-  std::size_t total = 0;
-  for (const Course& course : pattern.courses) total += course.ops.size();
-  layout.loops.reserve(total);
-  for (int c = 0; c < layout.courses; ++c) {
-    const Course& course = pattern.courses[c];
-    const int wales = static_cast<int>(course.ops.size());
-    layout.wales = std::max(layout.wales, wales);
-    for (int w = 0; w < wales; ++w) {
-      Loop l;
-      l.course = c;
-      l.wale = w;
-      assert(can_lay_out(course.ops[w].stitch));
-      l.stitch = course.ops[w].stitch;
-      l.yarn = course.ops[w].yarn;
-      const double z = stitch(l.stitch).family == StitchFamily::purl ? -1.0 : 1.0;
-      const glm::dvec3 origin(w * W, c * C, 0.0);
-      for (int i = 0; i < loop_points; ++i) l.data_points[i] = origin + loop[i] * glm::dvec3(1.0, 1.0, z);
-      // Exactly the next loop's P0, not origin + W rounded differently.
-      l.data_points[loop_points - 1] = glm::dvec3((w + 1) * W, c * C, 0.0);
-      layout.loops.push_back(l);
+Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
+  Layout out;
+  const Gauge& g = pattern.gauge;
+  const double W = g.loop_width, C = g.course_spacing(), T = g.thickness;
+  double thickest = 0.0;
+  for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
+  out.knitting = pattern.knitting;
+  out.loop_width = W;
+  out.course_spacing = C;
+  out.thickness = T;
+  out.float_behind = -(0.3 * T + 0.6 * thickest);
+  out.float_in_front = T + 0.6 * thickest;
+
+  const bool bind_off = pattern.bound_off && !graph.live.empty();
+  out.needle = graph.needle;
+  if (bind_off) out.needle.push_back(static_cast<int>(graph.live.size()));
+  out.courses = static_cast<int>(out.needle.size());
+  out.wales = out.needle.empty() ? 0 : *std::max_element(out.needle.begin(), out.needle.end());
+  for (int c = 0; c < out.courses; ++c) {
+    // Flat work is centred on the widest course; a tube starts each round at angle zero.
+    out.origin_x.push_back(pattern.knitting == Knitting::flat ? 0.5 * (out.wales - out.needle[c]) * W : 0.0);
+    int direction = -1;  // in the round every course runs right to left
+    if (pattern.knitting == Knitting::flat) {
+      if (c == 0) direction = !pattern.courses.empty() && pattern.courses.front().side == Side::wrong ? -1 : 1;
+      else if (c <= static_cast<int>(pattern.courses.size())) direction = pattern.courses[c - 1].side == Side::right ? -1 : 1;
+      else direction = -out.direction.back();  // the bind-off turns like any row
+    }
+    out.direction.push_back(direction);
+  }
+  for (const knit_graph::Float& f : graph.floats) out.floats.push_back({f.course, f.first, f.last, f.yarn, f.in_front});
+
+  // Every loop at its needle position by its stitch's template.
+  const auto plain = plain_loop(g);
+  auto centre_x = [&](int course, int slot) { return out.origin_x[course] + (slot + 0.5) * W; };
+  auto place = [&](Loop& l) {
+    const glm::dvec3 origin(out.origin_x[l.course] + l.wale * W, l.course * C, 0.0);
+    const double d = pattern.yarns[l.yarn].diameter;
+    for (int i = 0; i < loop_points; ++i) {
+      glm::dvec3 p = plain[i];
+      switch (l.shape) {
+        case Template::knit: break;
+        case Template::purl: p.z = -p.z; break;
+        case Template::tuck: p.z = -0.35 * p.z - 0.6 * d * head[i]; break;
+        case Template::bind_off:
+          p.y *= 0.55;
+          p.z *= 0.6;
+          p.x += 0.35 * W * head[i] * out.direction[l.course];
+          break;
+      }
+      l.data_points[i] = origin + p;
+    }
+    // Exactly the next loop's P0, not origin + W rounded differently.
+    l.data_points[loop_points - 1] = glm::dvec3(out.origin_x[l.course] + (l.wale + 1) * W, l.course * C, 0.0);
+  };
+
+  const std::size_t graph_loops = graph.loops.size();
+  out.loops.resize(graph_loops + (bind_off ? graph.live.size() : 0));
+  for (std::size_t i = 0; i < graph_loops; ++i) {
+    const knit_graph::Loop& k = graph.loops[i];
+    Loop& l = out.loops[i];
+    l.course = k.course;
+    l.wale = k.slot;
+    l.stitch = k.stitch;
+    l.yarn = k.yarn;
+    l.order = k.order;
+    const StitchDef& s = stitch(k.stitch);
+    if (k.held) l.shape = Template::tuck;
+    else if (purled(s)) l.shape = Template::purl;
+    else if (s.family == StitchFamily::cable && s.cable.purl_background) {
+      // A twist's travelling stitches (those crossing in front) are knit, the rest purled.
+      const double from = centre_x(graph.loops[k.parents.front()].course, graph.loops[k.parents.front()].slot);
+      const bool in_front = s.cable.front ? from > centre_x(k.course, k.slot) : from < centre_x(k.course, k.slot);
+      l.shape = in_front ? Template::knit : Template::purl;
     }
   }
-  return layout;
+  // The parents of every loop, the bind-off's too (the live stitches it works).
+  std::vector<std::vector<int>> parents(out.loops.size());
+  for (std::size_t i = 0; i < graph_loops; ++i) parents[i] = graph.loops[i].parents;
+  if (bind_off) {
+    const int course = out.courses - 1;
+    // The bind-off is worked with the yarn that worked last.
+    int yarn = pattern.cast_on_yarn;
+    if (!pattern.courses.empty()) {
+      const Course& last = pattern.courses.back();
+      if (!last.ops.empty()) yarn = (last.side == Side::right ? last.ops.front() : last.ops.back()).yarn;
+    }
+    int next_order = 0;
+    for (const knit_graph::Loop& k : graph.loops) {
+      if (k.yarn == yarn) next_order = std::max(next_order, k.order + 1);
+    }
+    const int n = static_cast<int>(graph.live.size());
+    for (int s = 0; s < n; ++s) {
+      Loop& l = out.loops[graph_loops + s];
+      l.course = course;
+      l.wale = s;
+      l.stitch = stitch_id("k");
+      l.yarn = yarn;
+      l.order = next_order + (out.direction[course] < 0 ? n - 1 - s : s);
+      l.shape = Template::bind_off;
+      parents[graph_loops + s] = graph.live[s];
+    }
+  }
+  for (Loop& l : out.loops) place(l);
+
+  // Each loop pulled through its parents. A cable's loop leans from its parent's head to
+  // its new needle position, passing in front of or behind the loops it crosses. Other
+  // loops meet their parents halfway: the parents' heads and the loop's legs, so that
+  // decreases gather with one parent on top; a parent whose child is more than one course
+  // up (slipped, tucked) is stretched up to it.
+  for (std::size_t i = 0; i < out.loops.size(); ++i) {
+    if (parents[i].empty()) continue;
+    Loop& child = out.loops[i];
+    const StitchDef& s = stitch(child.stitch);
+    const double d = pattern.yarns[child.yarn].diameter;
+    const double cx = centre_x(child.course, child.wale);
+    if (s.family == StitchFamily::cable) {
+      const Loop& parent = out.loops[parents[i].front()];
+      const double px = centre_x(parent.course, parent.wale);
+      // In F cables the stitches moving left cross in front, in B those moving right.
+      const bool in_front = s.cable.front ? px > cx : px < cx;
+      const double dz = (in_front ? 0.6 : -0.6) * d;
+      // Half the way in the child's legs, half in the parent's head: the cross spans two courses.
+      Loop& moved = out.loops[parents[i].front()];
+      for (int j = 0; j < loop_points; ++j) {
+        child.data_points[j] += glm::dvec3(feet[j] * 0.5 * (px - cx), 0.0, crossing[j] * dz);
+        moved.data_points[j] += head[j] * glm::dvec3(0.5 * (cx - px), 0.0, 0.5 * dz);
+      }
+      continue;
+    }
+    double mean = 0.0;
+    for (int p : parents[i]) mean += centre_x(out.loops[p].course, out.loops[p].wale);
+    mean /= static_cast<double>(parents[i].size());
+    const double meet = 0.5 * (cx + mean);
+    for (std::size_t k = 0; k < parents[i].size(); ++k) {
+      Loop& parent = out.loops[parents[i][k]];
+      const double px = centre_x(parent.course, parent.wale);
+      double dz = 0.0;
+      if (s.family == StitchFamily::decrease && parents[i].size() > 1)
+        dz = (k == top_parent(s, parents[i].size()) ? 0.5 : -0.5) * d;
+      const glm::dvec3 shift(meet - px, (child.course - parent.course - 1) * C, dz);
+      for (int j = 0; j < loop_points; ++j) parent.data_points[j] += head[j] * shift;
+    }
+    for (int j = 0; j < loop_points; ++j) child.data_points[j].x += legs[j] * (meet - cx);
+  }
+  return out;
+}
+
+glm::dvec3 to_fabric(const Layout& layout, const glm::dvec3& p, int course) {
+  if (layout.knitting == Knitting::flat) return p;
+  const double circumference = layout.needle[course] * layout.loop_width;
+  if (circumference <= 0.0) return p;
+  const double turn = p.x / circumference;  // 0 at needle position 0, 1 a round later
+  const double angle = 2.0 * std::numbers::pi * turn - std::numbers::pi;
+  const double r = circumference / (2.0 * std::numbers::pi) + p.z;
+  // Worked right to left, a round climbs one course from x = circumference to x = 0.
+  return {r * std::sin(angle), p.y + layout.course_spacing * (1.0 - turn), r * std::cos(angle)};
 }
 
 }  // namespace knitc::layout

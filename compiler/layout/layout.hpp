@@ -1,6 +1,11 @@
-// Layout: a loop instance per stitch, placed on the fabric. Millimetres; the fabric lies
-// in the XY plane, +X along a course (wale index grows), +Y up the wales (course index
-// grows), +Z out of the technical face.
+// Layout: a loop instance for every loop of the knit graph, placed on the fabric by a
+// template per stitch derived from the plain loop of the seed paper.
+//
+// Millimetres. Loops are laid out in course-local flat coordinates: +X along a course
+// (needle position grows, face view), +Y up the wales (course index grows), +Z out of the
+// technical face. Flat knitting stays flat; knitting in the round is wrapped onto a tube
+// by to_fabric(), the face outside, each course rising one course spacing as it goes
+// round so that the yarn spirals.
 #pragma once
 
 #include <array>
@@ -9,6 +14,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "knit_graph/knit_graph.hpp"
 #include "pattern.hpp"
 
 namespace knitc::layout {
@@ -22,26 +28,63 @@ std::span<const glm::dvec3, loop_points> plain_loop_fractions();
 // The plain loop's data points in mm for a gauge, with P0 at the origin.
 std::array<glm::dvec3, loop_points> plain_loop(const Gauge& gauge);
 
+// How a loop is drawn, chosen from its stitch (and, for cables, its place in the cross).
+enum class Template : std::uint8_t {
+  knit,      // the plain loop: pulled through from the back, a V on the face
+  purl,      // the plain loop seen from the back: z mirrored, a bump on the face
+  tuck,      // held, not knitted: lies behind the old loop, caught by the loop above
+  bind_off,  // a low loop lying over toward the next one along the top edge
+};
+
+// How much of a loop's parents' heads, and of its own legs, a shift moves, point by point:
+// the head weights are 1 over the needle loop (P6..P10) and 0 at the sinker loops
+// (P0, P16), the leg weights the other way round, also 0 at P0 and P16 so that loops of a
+// course keep sharing their end points.
+std::span<const double, loop_points> head_weights();
+std::span<const double, loop_points> leg_weights();
+
 struct Loop {
-  int course = 0;
-  int wale = 0;
+  int course = 0;  // 0 is the cast-on; pattern course i is course i + 1; a bind-off is one more
+  int wale = 0;    // needle position after its course, left to right in face view
   StitchId stitch = 0;
-  int yarn = 0;  // index into Pattern::yarns
-  std::array<glm::dvec3, loop_points> data_points;  // mm, fabric coordinates
+  int yarn = 0;    // index into Pattern::yarns
+  int order = 0;   // place along its yarn, in working order
+  Template shape = Template::knit;
+  // mm, course-local flat coordinates, P0 at the left (face view) whichever way it is worked
+  std::array<glm::dvec3, loop_points> data_points;
+};
+
+// A stretch of yarn passing needle positions [first, last] of a course without making
+// loops there: a slipped stitch's float, or a colour's float in stranded work.
+struct Float {
+  int course = 0;
+  int first = 0, last = 0;
+  int yarn = 0;
+  bool in_front = false;
 };
 
 struct Layout {
-  int courses = 0;
-  int wales = 0;
-  std::vector<Loop> loops;  // course by course, left to right within a course
+  int courses = 0;  // including the cast-on (and the bind-off when there is one)
+  int wales = 0;    // the widest course's needle positions
+  Knitting knitting = Knitting::flat;
+  double loop_width = 0.0, course_spacing = 0.0, thickness = 0.0;
+  std::vector<Loop> loops;        // course by course, left to right within a course
+  std::vector<int> needle;        // needle positions per course
+  std::vector<double> origin_x;   // x of needle position 0 per course (flat work is centred)
+  std::vector<int> direction;     // per course: -1 worked right to left (face view), +1 left to right
+  std::vector<Float> floats;      // slipped stitches' floats
+  // The z of yarn floating behind and in front of the fabric: clear of the loops' legs.
+  double float_behind = 0.0, float_in_front = 0.0;
 };
 
-// Places loop (course c, wale w) with its P0 at (w W, c C, 0). Loops of a course share
-// end points: P16 of one is P0 of the next. A purl loop is the knit loop seen from the
-// back: its z is mirrored. The pattern must hold only stitches can_lay_out accepts.
+// Lays out every loop of the pattern's knit graph, and a bind-off course when the
+// pattern binds off. Throws std::invalid_argument (from the graph) on a course that does
+// not work the needle's live stitches.
 Layout lay_out(const Pattern& pattern);
+Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph);
 
-// Whether the layout has a template for the stitch yet (knit and purl so far).
-bool can_lay_out(StitchId stitch);
+// A course-local point in fabric coordinates: the same point for flat work, wrapped onto
+// the tube (circumference: the course's needle positions x W) for work in the round.
+glm::dvec3 to_fabric(const Layout& layout, const glm::dvec3& local, int course);
 
 }  // namespace knitc::layout

@@ -48,7 +48,7 @@ std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_p
       const layout::Loop& loop = fabric.layout.loops[index];
       json data = json::array(), samples = json::array();
       for (const auto& p : loop.data_points) data.push_back(xyz(p));
-      for (std::size_t s = piece.loop_samples[j]; s <= piece.loop_samples[j + 1]; ++s)
+      for (std::size_t s = piece.loop_samples[j].first; s <= piece.loop_samples[j].second; ++s)
         samples.push_back(xyz(piece.frames.origin[s]));
       loops[index] = {{"course", loop.course},
                       {"wale", loop.wale},

@@ -1,34 +1,169 @@
 #include "yarn_paths/yarn_paths.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
 namespace knitc::yarn_paths {
 
 namespace {
 
-void append_loop(Piece& piece, const layout::Layout& layout, int index) {
-  const auto& points = layout.loops[index].data_points;
-  // Consecutive loops share an end point: the next loop's P0 is this one's P16.
-  const int first = piece.data_points.empty() ? 0 : 1;
-  piece.data_points.insert(piece.data_points.end(), points.begin() + first, points.end());
-  piece.loops.push_back(index);
+using layout::Layout;
+
+// Builds one piece, its points in course-local coordinates mapped to the fabric as they go.
+struct PieceBuilder {
+  const Layout& layout;
+  Piece piece;
+  glm::dvec3 last_local{0.0};  // the last point added, course-local
+  int last_course = 0;
+  int last_wale = 0;
+
+  void add(const glm::dvec3& local, int course) {
+    const glm::dvec3 p = layout::to_fabric(layout, local, course);
+    // Never two equal points in a row: the interpolation needs distinct parameters.
+    if (!piece.data_points.empty() && glm::distance(piece.data_points.back(), p) < 1e-9) return;
+    piece.data_points.push_back(p);
+    last_local = local;
+    last_course = course;
+  }
+
+  // Yarn lying straight from a to b (course-local, same course) at height z off the fabric,
+  // a point about every loop width, the ends themselves not added.
+  void float_between(const glm::dvec3& a, const glm::dvec3& b, double z, int course) {
+    const double W = layout.loop_width;
+    const int n = std::max(1, static_cast<int>(std::lround(std::abs(b.x - a.x) / W)));
+    for (int k = 0; k < n; ++k) {
+      const double t = (k + 0.5) / n;
+      glm::dvec3 p = a + t * (b - a);
+      p.z = z;
+      add(p, course);
+    }
+  }
+
+  void add_loop(int index) {
+    const layout::Loop& loop = layout.loops[index];
+    const bool reversed = layout.direction[loop.course] < 0;
+    const glm::dvec3& start = loop.data_points[reversed ? layout::loop_points - 1 : 0];
+    // The yarn's first point on the loop is shared with the loop worked before, or a new one.
+    const bool shared = !piece.data_points.empty() &&
+                        glm::distance(layout::to_fabric(layout, start, loop.course), piece.data_points.back()) < 1e-9;
+    piece.loop_first.push_back(shared ? piece.data_points.size() - 1 : piece.data_points.size());
+    piece.loops.push_back(index);
+    for (int k = shared ? 1 : 0; k < layout::loop_points; ++k)
+      piece.data_points.push_back(layout::to_fabric(layout, loop.data_points[reversed ? layout::loop_points - 1 - k : k], loop.course));
+    last_local = loop.data_points[reversed ? 0 : layout::loop_points - 1];
+    last_course = loop.course;
+    last_wale = loop.wale;
+  }
+
+  // A short end of yarn behind the fabric, leaving `at` along x in direction `way`.
+  std::vector<glm::dvec3> tail(const glm::dvec3& at, double way) const {
+    const double W = layout.loop_width, C = layout.course_spacing, z = layout.float_behind;
+    return {at + glm::dvec3(way * 0.45 * W, 0.15 * C, 0.5 * z), at + glm::dvec3(way * 1.1 * W, 0.05 * C, z)};
+  }
+};
+
+// The first point of a loop along the yarn, course-local.
+glm::dvec3 entry(const Layout& layout, int index) {
+  const layout::Loop& l = layout.loops[index];
+  return l.data_points[layout.direction[l.course] < 0 ? layout::loop_points - 1 : 0];
+}
+
+bool floats_in_front(const Layout& layout, int course, int yarn, double x0, double x1) {
+  const double W = layout.loop_width;
+  for (const layout::Float& f : layout.floats) {
+    if (f.course != course || f.yarn != yarn || !f.in_front) continue;
+    const double a = layout.origin_x[course] + f.first * W, b = layout.origin_x[course] + (f.last + 1) * W;
+    if (std::min(x0, x1) < b - 1e-9 && std::max(x0, x1) > a + 1e-9) return true;
+  }
+  return false;
+}
+
+std::vector<Piece> trace_smooth(const Layout& layout) {
+  const double W = layout.loop_width;
+  int yarns = 0;
+  for (const layout::Loop& l : layout.loops) yarns = std::max(yarns, l.yarn + 1);
+  std::vector<std::vector<int>> along(yarns);
+  for (std::size_t i = 0; i < layout.loops.size(); ++i) along[layout.loops[i].yarn].push_back(static_cast<int>(i));
+  std::vector<Piece> pieces;
+  for (int y = 0; y < yarns; ++y) {
+    auto& order = along[y];
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return layout.loops[a].order < layout.loops[b].order; });
+    PieceBuilder b{layout, {}, {}, 0, 0};
+    auto finish = [&] {
+      if (b.piece.loops.empty()) return;
+      const int c = b.last_course;
+      for (const auto& p : b.tail(b.last_local, layout.direction[c])) b.add(p, c);
+      pieces.push_back(std::move(b.piece));
+      b.piece = {};
+    };
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const int index = order[k];
+      const int course = layout.loops[index].course;
+      const glm::dvec3 start = entry(layout, index);
+      if (b.piece.loops.empty()) {
+        b.piece.yarn = y;
+      } else if (course == b.last_course) {
+        // Needle positions passed by within the course, or a cable's sinker loop crossing
+        // behind it: a float, behind unless slipped wyif.
+        if (std::abs(layout.loops[index].wale - b.last_wale) > 1 || std::abs(start.x - b.last_local.x) > 0.5 * W) {
+          const bool front = floats_in_front(layout, course, y, b.last_local.x, start.x);
+          b.float_between(b.last_local, start, front ? layout.float_in_front : layout.float_behind, course);
+        }
+      } else if (course == b.last_course + 1) {
+        const glm::dvec3 a = b.last_local;
+        const int from = b.last_course;
+        if (layout.knitting == Knitting::round) {
+          // Round the tube: in this course's coordinates the next round starts a turn to the left.
+          glm::dvec3 next = start;
+          next.x -= layout.needle[course] * W;
+          next.y -= layout.course_spacing;
+          if (std::abs(a.x - next.x) > 0.5 * W) b.float_between(a, next, layout.float_behind, from);
+        } else if (layout.direction[from] != layout.direction[course]) {
+          // Turn at the selvedge the row ended at, floating behind to it if the yarn's last
+          // or next loop is not at the edge (stranded work).
+          const double way = layout.direction[from];
+          const double edge = way < 0 ? std::min(a.x, start.x) : std::max(a.x, start.x);
+          const glm::dvec3 a_edge(edge, a.y, a.z), start_edge(edge, start.y, start.z);
+          if (std::abs(a.x - edge) > 0.5 * W) b.float_between(a, a_edge, layout.float_behind, from);
+          const double out = edge + way * 0.4 * W;
+          b.add({out, a.y + 0.3 * (start.y - a.y), 0.0}, from);
+          b.add({out, a.y + 0.7 * (start.y - a.y), 0.0}, from);
+          if (std::abs(start.x - edge) > 0.5 * W) b.float_between(start_edge, start, layout.float_behind, course);
+        } else {
+          b.float_between(a, start, layout.float_behind, from);  // the yarn slid back along the row
+        }
+      } else {
+        finish();  // the yarn is cut: courses without it in between
+        b.piece.yarn = y;
+      }
+      if (b.piece.loops.empty()) {
+        const auto t = b.tail(start, -layout.direction[course]);
+        b.add(t[1], course);
+        b.add(t[0], course);
+      }
+      b.add_loop(index);
+    }
+    finish();
+  }
+  return pieces;
 }
 
 }  // namespace
 
-std::vector<Piece> trace(const layout::Layout& layout, LoopModel model) {
+std::vector<Piece> trace(const Layout& layout, LoopModel model) {
+  if (model == LoopModel::smooth) return trace_smooth(layout);
   std::vector<Piece> pieces;
-  const int count = static_cast<int>(layout.loops.size());
-  for (int i = 0; i < count; ++i) {
-    const layout::Loop& loop = layout.loops[i];
-    const bool starts_piece =
-        model == LoopModel::paper || pieces.empty() ||
-        layout.loops[i - 1].course != loop.course || layout.loops[i - 1].yarn != loop.yarn;
-    if (starts_piece) {
-      pieces.emplace_back();
-      pieces.back().yarn = loop.yarn;
-      pieces.back().data_points.reserve(model == LoopModel::paper ? layout::loop_points
-                                                                  : layout.wales * points_per_loop + 1);
-    }
-    append_loop(pieces.back(), layout, i);
+  pieces.reserve(layout.loops.size());
+  for (std::size_t i = 0; i < layout.loops.size(); ++i) {
+    const layout::Loop& l = layout.loops[i];
+    Piece p;
+    p.yarn = l.yarn;
+    p.loops = {static_cast<int>(i)};
+    p.loop_first = {0};
+    for (const auto& q : l.data_points) p.data_points.push_back(layout::to_fabric(layout, q, l.course));
+    pieces.push_back(std::move(p));
   }
   return pieces;
 }

@@ -1,7 +1,9 @@
-// Yarn paths: the data points each yarn piece passes through, in order along the yarn.
-// A piece is a run of yarn that becomes one NURBS curve and one closed tube.
+// Yarn paths: the data points each yarn piece passes through, in order along the yarn,
+// in fabric coordinates. A piece is a run of yarn that becomes one NURBS curve and one
+// closed tube.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -12,20 +14,28 @@ namespace knitc::yarn_paths {
 
 enum class LoopModel {
   paper,   // each loop its own curve through its 17 points, as the seed paper does it
-  smooth,  // each course one curve through all of its loops' points: C2 along the yarn
+  smooth,  // each yarn one curve through all its loops, floats and turns: C2 along the yarn
 };
 
 struct Piece {
   int yarn = 0;                          // index into Pattern::yarns
-  std::vector<glm::dvec3> data_points;   // mm
-  // The loops along the piece, as indices into Layout::loops. Loop j of the piece
-  // passes through data_points[16 j .. 16 (j + 1)].
+  std::vector<glm::dvec3> data_points;   // mm, fabric coordinates, no two consecutive equal
+  // The loops along the piece in working order, as indices into Layout::loops. Loop j
+  // passes through data_points[loop_first[j] .. loop_first[j] + 16] (its P0..P16, or
+  // P16..P0 when worked right to left). Points outside every loop are floats, turns at
+  // the selvedge and tails.
   std::vector<int> loops;
+  std::vector<std::size_t> loop_first;
 };
 
 inline constexpr int points_per_loop = layout::loop_points - 1;
 
-// Pieces in a fixed order: course by course, left to right.
+// The smooth model: a piece per yarn from its first loop to its last, turning at the
+// selvedge between rows of flat work and spiralling in the round, floating behind (or in
+// front of) the needle positions it passes by; a course that does not use the yarn cuts
+// it, and every piece starts and ends with a short tail behind the fabric. Pieces go
+// yarn by yarn in the pattern's yarn order, each yarn's in working order.
+// The paper model: a piece per loop, loops in layout order; no floats, turns or tails.
 std::vector<Piece> trace(const layout::Layout& layout, LoopModel model);
 
 }  // namespace knitc::yarn_paths
