@@ -19,6 +19,7 @@
 
 #include "bench.hpp"
 #include "compile.hpp"
+#include "measure/measure.hpp"
 #include "render.hpp"
 #include "runtime.hpp"
 #include "writers/writers.hpp"
@@ -128,6 +129,16 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric) {
              vertices, elements);
   fmt::print(stderr, "bounds mm   [{:.3f}, {:.3f}, {:.3f}] .. [{:.3f}, {:.3f}, {:.3f}]\n", lo.x, lo.y, lo.z, hi.x, hi.y,
              hi.z);
+  const auto m = knitc::measure::measure(pattern, fabric);
+  for (std::size_t y = 0; y < pattern.yarns.size(); ++y)
+    fmt::print(stderr, "yarn {:<7} {:.1f} mm\n", pattern.yarns[y].id, m.yarn_length[y]);
+  fmt::print(stderr, "penetration {:.3f} d (deepest overlap of two yarn tubes; the seed paper's loop overlaps by about 0.85 d)\n",
+             m.deepest_penetration);
+  fmt::print(stderr, "tightest bend {:.3f} tube radii (smallest radius of curvature over the tube's radius)\n", m.tightest_bend);
+  fmt::print(stderr, "frame turn  {:.1f} deg (largest between consecutive sweep frames)\n", m.largest_frame_turn);
+  if (m.tightest_bend < 1.0)
+    fmt::print(stderr, "knitc: warning: a yarn bends tighter than its own radius ({:.2f} tube radii): the tube folds on itself there\n",
+               m.tightest_bend);
 }
 
 struct Compiled {

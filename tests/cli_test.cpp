@@ -77,7 +77,7 @@ TEST(Cli, WritesTheCentrelineJson) {
   ASSERT_EQ(doc["yarns"].size(), 1u);
   EXPECT_EQ(doc["yarns"][0]["id"], "A");
   EXPECT_EQ(doc["yarns"][0]["color"], "#d9c8a9");
-  ASSERT_EQ(doc["loops"].size(), 480u);  // jersey: 20 stitches, 24 rows
+  ASSERT_EQ(doc["loops"].size(), 520u);  // jersey: 20 stitches, the cast-on, 24 rows and the bind-off
   std::size_t pieces_points = 0;
   for (const auto& piece : doc["yarns"][0]["pieces"]) pieces_points += piece[1].get<std::size_t>();
   EXPECT_EQ(pieces_points, doc["yarns"][0]["points"].size());
@@ -198,11 +198,11 @@ TEST(Cli, RendersAPreviewPng) {
 TEST(Cli, ChartCheckAndReference) {
   const auto chart = test::run_knitc("chart patterns/jersey.lua");
   ASSERT_EQ(chart.exit_code, 0) << chart.err;
-  EXPECT_EQ(chart.out.rfind("# jersey: 24 rows on 20 stitches, in the round", 0), 0u);
-  EXPECT_NE(chart.out.find("| | | | | | | | | | | | | | | | | | | |  24\n"), std::string::npos);
+  EXPECT_EQ(chart.out.rfind("# jersey: 24 rows on 20 stitches, flat", 0), 0u);
+  EXPECT_NE(chart.out.find("24  | | | | | | | | | | | | | | | | | | | |\n"), std::string::npos);
   const auto check = test::run_knitc("check patterns/jersey.lua");
   EXPECT_EQ(check.exit_code, 0);
-  EXPECT_EQ(check.err, "patterns/jersey.lua: 24 rows, 20 stitches cast on, 20 live at the end\n");
+  EXPECT_EQ(check.err, "patterns/jersey.lua: 24 rows, 20 stitches cast on, 20 live at the end (bound off)\n");
   const auto dir = test::scratch_dir("check");
   test::write_text(dir / "loop.lua", "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } } }\n"
                                      "while true do end\n");

@@ -56,8 +56,8 @@ TEST(PlainLoop, ScalesByWidthHeightAndThickness) {
 TEST(Layout, PlacesLoopsOnTheGaugeAndSharesEndPoints) {
   const Pattern p = test::jersey(7, 5, 4.5, 5.0, 2.2);
   const auto layout = layout::lay_out(p);
-  ASSERT_EQ(layout.loops.size(), 35u);
-  EXPECT_EQ(layout.courses, 5);
+  ASSERT_EQ(layout.loops.size(), 42u);  // the cast-on's 7 and five rows'
+  EXPECT_EQ(layout.courses, 6);
   EXPECT_EQ(layout.wales, 7);
   const double C = 0.86 * 5.0;
   for (std::size_t i = 0; i < layout.loops.size(); ++i) {
@@ -67,28 +67,49 @@ TEST(Layout, PlacesLoopsOnTheGaugeAndSharesEndPoints) {
     EXPECT_NEAR(l.data_points[0].x, l.wale * 4.5, 1e-12);
     EXPECT_NEAR(l.data_points[0].y, l.course * C, 1e-12);
     EXPECT_NEAR(l.data_points[8].y, l.course * C + 5.0, 1e-12);
+    // Stockinette flat: every loop a knit loop on the face, in front of the plane.
+    EXPECT_GT(l.data_points[4].z, 0.0);
     if (l.wale + 1 < 7) {
       EXPECT_EQ(l.data_points[16], layout.loops[i + 1].data_points[0]);
     }
   }
 }
 
-TEST(YarnPaths, PaperModelHasAPiecePerLoopSmoothAPiecePerCourse) {
+TEST(YarnPaths, PaperModelHasAPiecePerLoopSmoothOnePerYarnTurningAtTheEdges) {
   const auto layout = layout::lay_out(test::jersey(6, 4));
   const auto paper = yarn_paths::trace(layout, LoopModel::paper);
   const auto smooth = yarn_paths::trace(layout, LoopModel::smooth);
-  ASSERT_EQ(paper.size(), 24u);
-  ASSERT_EQ(smooth.size(), 4u);
+  ASSERT_EQ(paper.size(), 30u);
   for (const auto& piece : paper) EXPECT_EQ(piece.data_points.size(), 17u);
-  for (std::size_t c = 0; c < smooth.size(); ++c) {
-    ASSERT_EQ(smooth[c].data_points.size(), 6u * 16u + 1u);
-    ASSERT_EQ(smooth[c].loops.size(), 6u);
-    for (int j = 0; j < 6; ++j) {
-      const auto& loop = layout.loops[smooth[c].loops[j]];
-      EXPECT_EQ(loop.course, static_cast<int>(c));
-      for (int k = 0; k < 17; ++k) EXPECT_EQ(smooth[c].data_points[16 * j + k], loop.data_points[k]);
+  ASSERT_EQ(smooth.size(), 1u);
+  const auto& yarn = smooth[0];
+  ASSERT_EQ(yarn.loops.size(), 30u);
+  for (std::size_t j = 0; j < yarn.loops.size(); ++j) {
+    const auto& loop = layout.loops[yarn.loops[j]];
+    EXPECT_EQ(loop.order, static_cast<int>(j));
+    // Right-side rows (odd courses) run right to left: the loop's points reversed.
+    const bool reversed = loop.course % 2 == 1;
+    EXPECT_EQ(layout.direction[loop.course], reversed ? -1 : 1);
+    for (int k = 0; k < 17; ++k)
+      EXPECT_EQ(yarn.data_points[yarn.loop_first[j] + k], loop.data_points[reversed ? 16 - k : k]);
+    // Within a course the loops share their ends; between courses the yarn turns outside
+    // the edge it reached.
+    if (j + 1 < yarn.loops.size()) {
+      const auto& next = layout.loops[yarn.loops[j + 1]];
+      if (next.course == loop.course) {
+        EXPECT_EQ(yarn.loop_first[j + 1], yarn.loop_first[j] + 16);
+      } else {
+        ASSERT_EQ(yarn.loop_first[j + 1], yarn.loop_first[j] + 19);  // two turning points
+        const auto& turn = yarn.data_points[yarn.loop_first[j] + 17];
+        EXPECT_TRUE(turn.x < 0.0 || turn.x > 6 * 4.0);
+        EXPECT_GT(turn.y, loop.course * 0.86 * 4.2);
+        EXPECT_LT(turn.y, next.course * 0.86 * 4.2);
+      }
     }
   }
+  // A tail at each end, behind the fabric.
+  EXPECT_LT(yarn.data_points.front().z, 0.0);
+  EXPECT_LT(yarn.data_points.back().z, 0.0);
 }
 
 // Paper mode: every loop is interpolated on its own; an independent implementation of
@@ -100,7 +121,7 @@ TEST(PaperModel, LoopsMatchAnIndependentNurbsImplementation) {
     o.parametrisation = parametrisation;
     const double W = 4.5;
     const Fabric f = compile(test::jersey(5, 4, W, 4.8, 2.4, 1.1), o);
-    ASSERT_EQ(f.pieces.size(), 20u);
+    ASSERT_EQ(f.pieces.size(), 25u);  // 5 stitches, the cast-on and 4 rows
     double worst = 0.0;
     for (const auto& piece : f.pieces) {
       const std::vector<glm::dvec3> q(piece.path.data_points.begin(), piece.path.data_points.end());
@@ -118,8 +139,8 @@ TEST(PaperModel, LoopsMatchAnIndependentNurbsImplementation) {
   }
 }
 
-// The turn, in degrees, of the yarn's tangent where loop `j` of a course meets loop j+1,
-// taken from whichever curve owns each side of the join.
+// The turn, in degrees, of the yarn's tangent where each loop meets its right-hand
+// neighbour in the course, taken from whichever curve owns each side of the join.
 std::vector<double> join_kinks(const Fabric& f) {
   std::vector<const CurvePiece*> owner(f.layout.loops.size());
   std::vector<std::size_t> slot(f.layout.loops.size());
@@ -129,13 +150,20 @@ std::vector<double> join_kinks(const Fabric& f) {
       slot[piece.path.loops[j]] = j;
     }
   }
+  // The curve parameter of a loop's P0 or P16 in its piece.
+  auto parameter = [&](std::size_t loop, bool p16) {
+    const CurvePiece& piece = *owner[loop];
+    const bool reversed = piece.path.loops.size() > 1 && f.layout.direction[f.layout.loops[loop].course] < 0;
+    const std::size_t first = piece.path.loop_first[slot[loop]];
+    return piece.curve.parameters[first + (p16 != reversed ? 16 : 0)];
+  };
   std::vector<double> kinks;
   for (std::size_t i = 0; i + 1 < f.layout.loops.size(); ++i) {
     if (f.layout.loops[i].course != f.layout.loops[i + 1].course) continue;
     const CurvePiece& a = *owner[i];
     const CurvePiece& b = *owner[i + 1];
-    const double ua = a.curve.parameters[(slot[i] + 1) * 16];
-    const double ub = b.curve.parameters[slot[i + 1] * 16];
+    const double ua = parameter(i, true);
+    const double ub = parameter(i + 1, false);
     const glm::dvec3 ta = glm::normalize(nurbs::derivatives(a.curve.curve, ua, 1)[1]);
     const glm::dvec3 tb = glm::normalize(nurbs::derivatives(b.curve.curve, ub, 1)[1]);
     EXPECT_LT(glm::distance(nurbs::evaluate(a.curve.curve, ua), nurbs::evaluate(b.curve.curve, ub)), 1e-9);
@@ -150,12 +178,12 @@ TEST(SmoothModel, TangentTurnsContinuouslyAcrossEveryLoopJoin) {
     CompileOptions smooth;
     const Fabric f = compile(test::jersey(6, 3, W, 1.05 * W, 2.0, 1.0), smooth);
     const auto kinks = join_kinks(f);
-    ASSERT_EQ(kinks.size(), 15u);
+    ASSERT_EQ(kinks.size(), 20u);  // 5 joins in each of 4 courses
     for (double k : kinks) EXPECT_LT(k, 1e-6) << "W = " << W;
-    // One curve per course: the join is inside it, where a cubic with simple knots is C2.
+    // One curve per yarn: the join is inside it, where a cubic with simple knots is C2.
     for (const auto& piece : f.pieces) {
       for (std::size_t j = 1; j < piece.path.loops.size(); ++j) {
-        const double u = piece.curve.parameters[16 * j];
+        const double u = piece.curve.parameters[piece.path.loop_first[j]];
         const auto left = nurbs::derivatives(piece.curve.curve, u - 1e-9, 2);
         const auto right = nurbs::derivatives(piece.curve.curve, u + 1e-9, 2);
         EXPECT_LT(glm::distance(left[2], right[2]), 1e-4 * glm::length(left[2]) + 1e-6);
@@ -199,9 +227,18 @@ TEST(Fabric, BoundingBoxMatchesTheGauge) {
       }
     }
     const double C = 0.86 * H;
-    EXPECT_NEAR(hi.x - lo.x, wales * W, d);
-    EXPECT_NEAR(hi.y - lo.y, (courses - 1) * C + H + d, 0.1 * d);
-    EXPECT_NEAR(hi.z - lo.z, T + d, 0.1 * d);
+    // The cast-on is a course too. The smooth model's yarn also turns 0.4 W outside each
+    // edge and has a tail 1.1 W long at each end, behind the fabric at -(0.3 T + 0.6 d).
+    const bool smooth = model == LoopModel::smooth;
+    EXPECT_NEAR(hi.y - lo.y, courses * C + H + d, 0.1 * d);
+    if (smooth) {
+      EXPECT_GT(hi.x - lo.x, (wales + 0.8) * W);
+      EXPECT_LT(hi.x - lo.x, (wales + 2.2) * W + d);
+      EXPECT_NEAR(hi.z - lo.z, T + 0.5 * d + 0.3 * T + 0.6 * d + 0.5 * d, 0.1 * d);
+    } else {
+      EXPECT_NEAR(hi.x - lo.x, wales * W, d);
+      EXPECT_NEAR(hi.z - lo.z, T + d, 0.1 * d);
+    }
     EXPECT_NEAR(lo.y, -0.5 * d, 0.05 * d);
   }
 }

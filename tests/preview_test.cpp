@@ -18,9 +18,12 @@ struct Image {
   const unsigned char* at(int x, int y) const { return &rgb[3 * (static_cast<std::size_t>(y) * width + x)]; }
 };
 
+// Eight rows of stockinette, flat.
+const std::string kJersey8 = "for i = 1, 8 do row(i % 2 == 1 and \"k\" or \"p\") end";
+
 Image preview(const std::string& yarn, const std::string& rows, render::RenderOptions::Side side) {
   const Pattern p = runtime::run_pattern("pattern { gauge = { loop_width = 4, loop_height = 4.2, thickness = 2 }, yarns = { A = " +
-                                             yarn + " } }\ncast_on(8)\n" + rows + "\n",
+                                             yarn + " }, knitting = \"flat\" }\ncast_on(8)\n" + rows + "\n",
                                          "t.lua")
                         .pattern;
   CompileOptions o;
@@ -48,7 +51,7 @@ bool is_background(const unsigned char* p) {
 }
 
 TEST(Preview, OneColourSwatchIsThatColourWhereTheFabricIs) {
-  const Image img = preview("{ diameter = 1, color = \"#c03020\" }", "rows(8, \"k\")", render::RenderOptions::Side::face);
+  const Image img = preview("{ diameter = 1, color = \"#c03020\" }", kJersey8, render::RenderOptions::Side::face);
   ASSERT_EQ(img.width, 160);
   int fabric = 0, reddish = 0;
   for (int y = 0; y < img.height; ++y) {
@@ -74,17 +77,17 @@ double difference(const Image& a, const Image& b) {
 
 TEST(Preview, FaceAndBackOfJerseyDiffer) {
   const std::string yarn = "{ diameter = 1, color = \"#d9c8a9\" }";
-  const Image face = preview(yarn, "rows(8, \"k\")", render::RenderOptions::Side::face);
-  const Image back = preview(yarn, "rows(8, \"k\")", render::RenderOptions::Side::back);
-  const Image again = preview(yarn, "rows(8, \"k\")", render::RenderOptions::Side::face);
+  const Image face = preview(yarn, kJersey8, render::RenderOptions::Side::face);
+  const Image back = preview(yarn, kJersey8, render::RenderOptions::Side::back);
+  const Image again = preview(yarn, kJersey8, render::RenderOptions::Side::face);
   EXPECT_EQ(difference(face, again), 0.0);
   EXPECT_GT(difference(face, back), 2.0);
 }
 
 TEST(Preview, TheImageChangesWithThePattern) {
-  const Image jersey = preview("{ diameter = 1 }", "rows(8, \"k\")", render::RenderOptions::Side::face);
+  const Image jersey = preview("{ diameter = 1 }", kJersey8, render::RenderOptions::Side::face);
   const Image rib = preview("{ diameter = 1 }", "rows(8, \"k2, p2\")", render::RenderOptions::Side::face);
-  const Image plied = preview("{ diameter = 1, section = \"plied\", plies = 3 }", "rows(8, \"k\")", render::RenderOptions::Side::face);
+  const Image plied = preview("{ diameter = 1, section = \"plied\", plies = 3 }", kJersey8, render::RenderOptions::Side::face);
   EXPECT_GT(difference(jersey, rib), 2.0);
   EXPECT_GT(difference(jersey, plied), 1.0);
 }

@@ -31,9 +31,10 @@ TEST(Snapshot, AOneMicrometreChangeOfADataPointShows) {
 TEST(Snapshot, SaysWhatTheFabricIs) {
   const Pattern p = test::jersey(4, 3);
   const std::string s = writers::snapshot(p, compile(p, CompileOptions{}));
-  EXPECT_EQ(s.rfind("knitc snapshot 1\npattern     jersey\ncourses     3\nwales       4\nloops       12\npieces      3\n", 0), 0u)
+  EXPECT_EQ(s.rfind("knitc snapshot 1\npattern     jersey\ncourses     4\nwales       4\nloops       16\npieces      1\n", 0), 0u)
       << s;
   EXPECT_NE(s.find("\nyarn A mm  "), std::string::npos);
+  EXPECT_NE(s.find("\npenetration "), std::string::npos);
   EXPECT_NE(s.find("\ngeometry    fnv1a64 "), std::string::npos);
 }
 

@@ -60,12 +60,14 @@ inline CommandResult run_knitc(const std::string& args) {
   return r;
 }
 
+// Stockinette knitted flat: knit right-side rows, purl wrong-side rows; no bind-off.
 inline std::string jersey_source(int stitches, int rows, double w = 4.0, double h = 4.2, double t = 2.0,
                                  double d = 1.0) {
   std::ostringstream s;
   s << "pattern {\n  name = \"jersey\",\n  gauge = { loop_width = " << w << ", loop_height = " << h
-    << ", thickness = " << t << " },\n  yarns = { A = { diameter = " << d << ", color = \"#d9c8a9\" } },\n}\n"
-    << "cast_on(" << stitches << ")\nrows(" << rows << ", \"k\")\n";
+    << ", thickness = " << t << " },\n  yarns = { A = { diameter = " << d << ", color = \"#d9c8a9\" } },\n"
+    << "  knitting = \"flat\",\n}\n"
+    << "cast_on(" << stitches << ")\nfor i = 1, " << rows << " do row(i % 2 == 1 and \"k\" or \"p\") end\n";
   return s.str();
 }
 

@@ -104,9 +104,9 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
         case Template::purl: p.z = -p.z; break;
         case Template::tuck: p.z = -0.35 * p.z - 0.6 * d * head[i]; break;
         case Template::bind_off:
-          p.y *= 0.55;
-          p.z *= 0.6;
-          p.x += 0.35 * W * head[i] * out.direction[l.course];
+          p.y *= 0.85;
+          p.z *= 0.8;
+          p.x += 0.2 * W * head[i] * out.direction[l.course];
           break;
       }
       l.data_points[i] = origin + p;
@@ -192,7 +192,9 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
     double mean = 0.0;
     for (int p : parents[i]) mean += centre_x(out.loops[p].course, out.loops[p].wale);
     mean /= static_cast<double>(parents[i].size());
-    const double meet = 0.5 * (cx + mean);
+    // The legs move at most 0.4 W, or their sinker loops would double back on the
+    // neighbours' (P15 lies 0.25 W inside P16); the parents' heads take the rest.
+    const double meet = cx + std::clamp(0.5 * (mean - cx), -0.4 * W, 0.4 * W);
     for (std::size_t k = 0; k < parents[i].size(); ++k) {
       Loop& parent = out.loops[parents[i][k]];
       const double px = centre_x(parent.course, parent.wale);

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "measure/measure.hpp"
 #include "writers/writers.hpp"
 
 namespace knitc::writers {
@@ -37,13 +38,12 @@ std::string snapshot(const Pattern& pattern, const Fabric& fabric) {
   out += "wales       " + std::to_string(fabric.layout.wales) + "\n";
   out += "loops       " + std::to_string(fabric.layout.loops.size()) + "\n";
   out += "pieces      " + std::to_string(fabric.pieces.size()) + "\n";
-  for (std::size_t y = 0; y < pattern.yarns.size(); ++y) {
-    double length = 0.0;
-    for (const CurvePiece& p : fabric.pieces) {
-      if (p.path.yarn == static_cast<int>(y) && !p.arc_length.empty()) length += p.arc_length.back();
-    }
-    out += "yarn " + pattern.yarns[y].id + " mm  " + fixed(length, 3) + "\n";
-  }
+  const auto m = measure::measure(pattern, fabric);
+  for (std::size_t y = 0; y < pattern.yarns.size(); ++y)
+    out += "yarn " + pattern.yarns[y].id + " mm  " + fixed(m.yarn_length[y], 3) + "\n";
+  out += "penetration " + fixed(m.deepest_penetration, 3) + " d\n";
+  out += "tightest bend " + fixed(m.tightest_bend, 3) + " tube radii\n";
+  out += "frame turn  " + fixed(m.largest_frame_turn, 3) + " deg\n";
   std::size_t vertices = 0, elements = 0, triangles = 0;
   double lo[3], hi[3];
   for (int k = 0; k < 3; ++k) lo[k] = std::numeric_limits<double>::infinity(), hi[k] = -lo[k];

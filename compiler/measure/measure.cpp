@@ -1,0 +1,123 @@
+#include "measure/measure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+namespace knitc::measure {
+
+namespace {
+
+struct Point {
+  glm::dvec3 at;
+  double along;  // mm from the piece's start
+  double radius;
+  std::uint32_t piece;
+};
+
+// The centrelines as points no more than a quarter diameter apart.
+std::vector<Point> centreline_points(const Pattern& pattern, const Fabric& fabric) {
+  std::vector<Point> points;
+  for (std::size_t i = 0; i < fabric.pieces.size(); ++i) {
+    const CurvePiece& p = fabric.pieces[i];
+    const double d = pattern.yarns[p.path.yarn].diameter;
+    const auto& o = p.frames.origin;
+    for (std::size_t s = 0; s < o.size(); ++s) {
+      if (s > 0) {
+        const double step = glm::distance(o[s - 1], o[s]);
+        const int n = static_cast<int>(std::ceil(step / (0.25 * d)));
+        for (int k = 1; k < n; ++k) {
+          const double t = static_cast<double>(k) / n;
+          points.push_back({o[s - 1] + t * (o[s] - o[s - 1]), p.arc_length[s - 1] + t * (p.arc_length[s] - p.arc_length[s - 1]),
+                            0.5 * d, static_cast<std::uint32_t>(i)});
+        }
+      }
+      points.push_back({o[s], p.arc_length[s], 0.5 * d, static_cast<std::uint32_t>(i)});
+    }
+  }
+  return points;
+}
+
+std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
+  // 21 bits a coordinate: fabrics are far smaller than 2^20 cells across.
+  auto bits = [](std::int64_t v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1fffffu; };
+  return bits(x) << 42 | bits(y) << 21 | bits(z);
+}
+
+double deepest_penetration(const std::vector<Point>& points, double cell, double unit) {
+  if (points.empty()) return 0.0;
+  auto cell_of = [&](const glm::dvec3& p) {
+    return glm::i64vec3(std::floor(p.x / cell), std::floor(p.y / cell), std::floor(p.z / cell));
+  };
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto c = cell_of(points[i].at);
+    keyed[i] = {cell_key(c.x, c.y, c.z), static_cast<std::uint32_t>(i)};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> cells;
+  cells.reserve(keyed.size() / 4 + 1);
+  for (std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i;
+    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    cells.emplace(keyed[i].first, std::make_pair(i, j));
+    i = j;
+  }
+  double deepest = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point& a = points[i];
+    const auto c = cell_of(a.at);
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto found = cells.find(cell_key(c.x + dx, c.y + dy, c.z + dz));
+          if (found == cells.end()) continue;
+          for (std::size_t k = found->second.first; k < found->second.second; ++k) {
+            const std::uint32_t j = keyed[k].second;
+            if (j <= i) continue;
+            const Point& b = points[j];
+            const double reach = a.radius + b.radius;
+            if (a.piece == b.piece && std::abs(a.along - b.along) <= 2.0 * reach) continue;
+            const double gap = glm::distance(a.at, b.at);
+            if (gap < reach) deepest = std::max(deepest, (reach - gap) / unit);
+          }
+        }
+  }
+  return deepest;
+}
+
+}  // namespace
+
+FabricMeasures measure(const Pattern& pattern, const Fabric& fabric) {
+  FabricMeasures m;
+  m.loops = fabric.layout.loops.size();
+  m.pieces = fabric.pieces.size();
+  m.yarn_length.assign(pattern.yarns.size(), 0.0);
+  double thickest = 0.0;
+  for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
+  m.tightest_bend = std::numeric_limits<double>::infinity();
+  for (const CurvePiece& p : fabric.pieces) {
+    if (!p.arc_length.empty()) m.yarn_length[p.path.yarn] += p.arc_length.back();
+    const double radius = 0.5 * pattern.yarns[p.path.yarn].diameter;
+    for (std::size_t s = 0; s < p.samples.size(); ++s) {
+      const double k = nurbs::curvature(p.curve.curve, p.samples[s]);
+      if (k > 0.0) m.tightest_bend = std::min(m.tightest_bend, 1.0 / (k * radius));
+      if (s > 0) {
+        const double c = std::clamp(glm::dot(p.frames.normal[s - 1], p.frames.normal[s]), -1.0, 1.0);
+        const double t = std::clamp(glm::dot(p.frames.tangent[s - 1], p.frames.tangent[s]), -1.0, 1.0);
+        m.largest_frame_turn = std::max(m.largest_frame_turn, std::acos(std::min(c, t)) * 180.0 / std::numbers::pi);
+      }
+    }
+  }
+  // Distances are compared against each pair's radii; the overlap is reported per
+  // diameter of the thickest yarn (one yarn in most fabrics).
+  if (thickest > 0.0) m.deepest_penetration = deepest_penetration(centreline_points(pattern, fabric), thickest, thickest);
+  return m;
+}
+
+}  // namespace knitc::measure

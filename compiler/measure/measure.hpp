@@ -1,0 +1,30 @@
+// Geometric sanity of a compiled fabric: how long each yarn is, how deep distinct parts
+// of the yarns pass into each other, how tightly the tubes bend and how fast the sweep's
+// frames turn. Plain numbers from a Fabric, for `knitc build --stats` and the snapshots.
+#pragma once
+
+#include <vector>
+
+#include "compile.hpp"
+
+namespace knitc::measure {
+
+struct FabricMeasures {
+  std::size_t loops = 0, pieces = 0;
+  std::vector<double> yarn_length;  // mm, per Pattern::yarns entry (0 for a yarn not used)
+  // The deepest overlap of two yarn tubes, as a fraction of the yarn diameter: the
+  // largest (r_a + r_b - distance) / d over pairs of centreline points of different
+  // pieces, or of one piece more than two diameters apart along it. The centrelines are
+  // taken at the sweep's samples, filled in to a quarter diameter apart. 0: no overlap.
+  double deepest_penetration = 0.0;
+  // The smallest radius of curvature of any centreline, over its tube's radius (for a
+  // flattened or plied yarn, half its width): below 1 the tube folds on itself.
+  // Infinite for centrelines that are straight throughout.
+  double tightest_bend = 0.0;
+  double largest_frame_turn = 0.0;  // degrees, between consecutive sweep frames
+};
+
+// Linear in the fabric: a spatial hash of cells one diameter wide finds the close pairs.
+FabricMeasures measure(const Pattern& pattern, const Fabric& fabric);
+
+}  // namespace knitc::measure
