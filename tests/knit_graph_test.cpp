@@ -102,6 +102,35 @@ TEST(KnitGraph, EachYarnCountsItsOwnOrder) {
   EXPECT_EQ(at(g, 2, 0).order, 1);
 }
 
+TEST(KnitGraph, ATuckStackIsKnittedOffTogether) {
+  // Two tucks on the middle needle, then a knit row: the loop above takes the cast-on loop
+  // and both held loops, oldest first, and the needle positions never move.
+  const auto g = knit_graph::build(run("cast_on(3)\nrow \"k1, tuck1, k1\"\nrow \"k1, tuck1, k1\"\nrow \"k\"\n"));
+  const int first_tuck = g.course_first[1] + 1, second_tuck = g.course_first[2] + 1;
+  EXPECT_TRUE(g.loops[first_tuck].held);
+  EXPECT_TRUE(g.loops[second_tuck].held);
+  EXPECT_EQ(g.loops[second_tuck].slot, 1);
+  EXPECT_EQ(at(g, 3, 1).parents, (std::vector<int>{1, first_tuck, second_tuck}));
+  EXPECT_EQ(at(g, 3, 0).parents, (std::vector<int>{g.course_first[2]}));
+  EXPECT_EQ(g.needle, (std::vector<int>{3, 3, 3, 3}));
+}
+
+TEST(KnitGraph, AStripeChangeStartsTheNewYarnOnTheOldLoops) {
+  // Flat: two rows in A, two in B. B's first loops are pulled through A's last, and each
+  // yarn counts its own order from the edge its row starts at.
+  const auto g = knit_graph::build(run("cast_on(3)\nrows(2, \"k\")\nyarn \"B\"\nrows(2, \"k\")\n", true));
+  for (int w = 0; w < 3; ++w) {
+    EXPECT_EQ(at(g, 3, w).yarn, 1);
+    EXPECT_EQ(at(g, 3, w).parents, (std::vector<int>{g.course_first[2] + w}));
+    EXPECT_EQ(at(g, 2, w).yarn, 0);
+  }
+  EXPECT_EQ(at(g, 3, 2).order, 0);  // row 3 is a right-side row: from the right edge
+  EXPECT_EQ(at(g, 4, 0).order, 3);  // row 4 turns at the left edge
+  // The cast-on ends at the right edge, where row 1 starts.
+  EXPECT_EQ(at(g, 0, 0).order, 0);
+  EXPECT_EQ(at(g, 1, 2).order, 3);
+}
+
 TEST(KnitGraph, ACourseThatDoesNotFitTheNeedleIsRefused) {
   Pattern p = run("cast_on(3)\nrow \"k\"\n");
   p.courses[0].ops.pop_back();

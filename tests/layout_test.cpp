@@ -1,0 +1,151 @@
+// Loop templates placed by the knit graph: each stitch's loop where a knitter would
+// draw it, and the yarn paths through them.
+#include <algorithm>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "support.hpp"
+
+namespace knitc {
+namespace {
+
+using yarn_paths::LoopModel;
+
+Pattern run(const std::string& body, const std::string& knitting = "flat") {
+  return runtime::run_pattern("pattern { gauge = { loop_width = 4, loop_height = 4.2, thickness = 2 }, yarns = { A = { diameter = 1 }, "
+                              "B = { diameter = 1, color = \"#202080\" } }, knitting = \"" + knitting + "\" }\n" + body,
+                              "t.lua")
+      .pattern;
+}
+
+// The loop in course c (0: the cast-on) at needle position w.
+const layout::Loop& at(const layout::Layout& l, int c, int w) {
+  for (const auto& loop : l.loops)
+    if (loop.course == c && loop.wale == w) return loop;
+  throw std::out_of_range("no loop there");
+}
+
+TEST(Templates, PurlLoopsAreKnitLoopsSeenFromTheBack) {
+  const auto l = layout::lay_out(run("cast_on(4)\nrows(2, \"k1, p1\")\n"));
+  // Row 1 worked from the right: positions 3 and 1 are knit, 2 and 0 purl; row 2 the same on the face.
+  for (int c = 1; c <= 2; ++c) {
+    for (int w = 0; w < 4; ++w) {
+      const auto& loop = at(l, c, w);
+      const bool knit = w % 2 == 1;
+      EXPECT_EQ(loop.shape, knit ? layout::Template::knit : layout::Template::purl);
+      EXPECT_NEAR(loop.data_points[4].z, (knit ? 1.0 : -1.0) * 0.9999 * 2.0, 1e-9);
+    }
+  }
+}
+
+TEST(Templates, ATuckLoopLiesBehindAndItsOldLoopSpansTwoCourses) {
+  const auto l = layout::lay_out(run("cast_on(3)\nrow \"k1, tuck1, k1\"\nrow \"p\"\n"));
+  const double C = 0.86 * 4.2, H = 4.2;
+  const auto& tuck = at(l, 1, 1);
+  EXPECT_EQ(tuck.shape, layout::Template::tuck);
+  for (const auto& p : tuck.data_points) EXPECT_LE(p.z, 1e-12);
+  EXPECT_LT(tuck.data_points[8].z, -0.5);
+  // The cast-on loop under the tuck reaches up to the loop that knits both off.
+  EXPECT_NEAR(at(l, 0, 1).data_points[8].y, H + C, 1e-9);
+  EXPECT_NEAR(at(l, 0, 0).data_points[8].y, H, 1e-9);
+}
+
+TEST(Templates, ASlippedStitchStretchesAndTheYarnFloatsBehindIt) {
+  const auto l = layout::lay_out(run("cast_on(3)\nrow \"k1, sl1 wyib, k1\"\nrow \"p\"\n"));
+  const double C = 0.86 * 4.2, H = 4.2, W = 4.0;
+  EXPECT_NEAR(at(l, 0, 1).data_points[8].y, H + C, 1e-9);
+  EXPECT_THROW(at(l, 1, 1), std::out_of_range);  // no loop made there
+  const auto pieces = yarn_paths::trace(l, LoopModel::smooth);
+  ASSERT_EQ(pieces.size(), 1u);
+  // Between the two loops of row 1 the yarn passes position 1 behind the fabric.
+  int behind = 0;
+  for (const auto& p : pieces[0].data_points)
+    behind += p.y > C - 1e-9 && p.y < C + 1e-9 && p.x > W && p.x < 2 * W && p.z < -0.5;
+  EXPECT_EQ(behind, 1);
+}
+
+TEST(Templates, DecreasesGatherWithTheLeaningStitchOnTop) {
+  // Face view "k1, yo, k2tog, k1" (from the right: k1, k2tog, yo, k1) and its ssk twin.
+  for (const bool k2tog : {true, false}) {
+    const auto l = layout::lay_out(run(std::string("cast_on(4)\nrow \"k1, ") + (k2tog ? "k2tog" : "ssk") + ", yo, k1\"\n"));
+    // Worked from the right: k1 at 3, the decrease at 2 (through 1 and 2), yo at 1, k1 at 0.
+    const auto& left = at(l, 0, 1);
+    const auto& right = at(l, 0, 2);
+    const double W = 4.0;
+    // Both heads are drawn together over the decrease's centre (2.5 W).
+    EXPECT_GT(left.data_points[8].x, 1.5 * W + 0.3 * W);
+    EXPECT_LT(right.data_points[8].x, 2.5 * W + 0.3 * W);
+    // k2tog leans right: the left stitch lies on top; ssk the other way.
+    EXPECT_EQ(left.data_points[8].z > right.data_points[8].z, k2tog);
+    // The yarn over has no parent: the cast-on loop below it is not pulled up to it.
+    EXPECT_NEAR(at(l, 1, 1).data_points[0].y, 0.86 * 4.2, 1e-12);
+  }
+}
+
+TEST(Templates, CableLoopsCrossInFrontOrBehind) {
+  for (const bool front : {true, false}) {
+    const auto l = layout::lay_out(run(std::string("cast_on(4)\nrow \"") + (front ? "C4F" : "C4B") + "\"\n"));
+    // The loops that end up on the left came from the right: in C4F they cross in front.
+    const double left_z = at(l, 1, 0).data_points[3].z, right_z = at(l, 1, 3).data_points[3].z;
+    EXPECT_EQ(left_z > right_z, front);
+    EXPECT_GE(std::abs(left_z - right_z), 1.0);  // a yarn diameter apart where they pass
+    // Their feet lean toward the stitches they were pulled through.
+    EXPECT_GT(at(l, 1, 0).data_points[1].x, at(l, 1, 0).data_points[8].x);
+    EXPECT_LT(at(l, 1, 3).data_points[15].x, at(l, 1, 3).data_points[8].x);
+  }
+}
+
+TEST(YarnPathsOfFabrics, AStripeCutsTheYarnAndStartsTheNextWithATail) {
+  const auto l = layout::lay_out(run("cast_on(4)\nrows(2, \"k\")\nyarn \"B\"\nrows(2, \"k\")\nyarn \"A\"\nrows(2, \"k\")\n"));
+  const auto pieces = yarn_paths::trace(l, LoopModel::smooth);
+  ASSERT_EQ(pieces.size(), 3u);  // A below, A above (cut: B's rows between), B
+  EXPECT_EQ(pieces[0].yarn, 0);
+  EXPECT_EQ(pieces[1].yarn, 0);
+  EXPECT_EQ(pieces[2].yarn, 1);
+  EXPECT_EQ(pieces[0].loops.size(), 12u);
+  EXPECT_EQ(pieces[2].loops.size(), 8u);
+  for (const auto& p : pieces) {
+    EXPECT_LT(p.data_points.front().z, 0.0);
+    EXPECT_LT(p.data_points.back().z, 0.0);
+  }
+}
+
+TEST(YarnPathsOfFabrics, StrandedWorkFloatsTheOtherColourBehind) {
+  const auto l = layout::lay_out(run("cast_on(4)\nrow \"k1, k1 B, k1, k1 B\"\nrow \"p\"\n"));
+  const auto pieces = yarn_paths::trace(l, LoopModel::smooth);
+  ASSERT_EQ(pieces.size(), 2u);  // A (cast-on to row 2), B (row 1)
+  const auto& b = pieces.back();
+  EXPECT_EQ(b.yarn, 1);
+  EXPECT_EQ(b.loops.size(), 2u);
+  // From B's loop at position 3 to its loop at 1 the yarn lies behind position 2.
+  const auto first = b.data_points.begin() + static_cast<long>(b.loop_first[0]) + 16;
+  const auto second = b.data_points.begin() + static_cast<long>(b.loop_first[1]);
+  ASSERT_LT(first, second);
+  for (auto p = first + 1; p != second; ++p) EXPECT_LT(p->z, -0.5);
+}
+
+TEST(YarnPathsOfFabrics, InTheRoundTheYarnSpiralsRoundATube) {
+  const int n = 10;
+  const Pattern p = run("cast_on(" + std::to_string(n) + ")\nrows(4, \"k\")\n", "round");
+  const auto l = layout::lay_out(p);
+  const auto pieces = yarn_paths::trace(l, LoopModel::smooth);
+  ASSERT_EQ(pieces.size(), 1u);
+  const double W = 4.0, C = 0.86 * 4.2, R = n * W / (2.0 * std::numbers::pi);
+  // Every sinker point (P0 of a loop) on the circle of the tube's radius, climbing one
+  // course spacing per round; consecutive points never far apart.
+  const auto& yarn = pieces[0];
+  for (std::size_t j = 0; j < yarn.loops.size(); ++j) {
+    const auto& q = yarn.data_points[yarn.loop_first[j]];
+    EXPECT_NEAR(std::hypot(q.x, q.z), R, 1e-9);
+  }
+  for (std::size_t i = 1; i < yarn.data_points.size(); ++i)
+    EXPECT_LT(glm::distance(yarn.data_points[i - 1], yarn.data_points[i]), 0.7 * W);
+  const auto& first = yarn.data_points[yarn.loop_first.front()];
+  const auto& last = yarn.data_points[yarn.loop_first.back() + 16];
+  EXPECT_NEAR(last.y - first.y, 5 * C, 1e-9);  // the cast-on round and four more
+}
+
+}  // namespace
+}  // namespace knitc
