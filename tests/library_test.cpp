@@ -65,7 +65,7 @@ TEST_P(Library, CompilesToClosedTwoManifoldTubes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Patterns, Library, testing::ValuesIn(library()),
-                         [](const testing::TestParamInfo<std::string>& info) { return info.param; });
+                         [](const testing::TestParamInfo<std::string>& param) { return param.param; });
 
 }  // namespace
 }  // namespace knitc
