@@ -67,7 +67,7 @@ TEST(Templates, ASlippedStitchStretchesAndTheYarnFloatsBehindIt) {
 }
 
 TEST(Templates, DecreasesGatherWithTheLeaningStitchOnTop) {
-  // Face view "k1, yo, k2tog, k1" (from the right: k1, k2tog, yo, k1) and its ssk twin.
+  // "k1, k2tog, yo, k1" worked from the right edge, and its ssk twin.
   for (const bool k2tog : {true, false}) {
     const auto l = layout::lay_out(run(std::string("cast_on(4)\nrow \"k1, ") + (k2tog ? "k2tog" : "ssk") + ", yo, k1\"\n"));
     // Worked from the right: k1 at 3, the decrease at 2 (through 1 and 2), yo at 1, k1 at 0.

@@ -41,7 +41,7 @@ struct Float {
 struct Graph {
   std::vector<Loop> loops;        // the cast-on's, then course by course in face order
   std::vector<int> course_first;  // index of each course's first loop; one more entry at the end
-  std::vector<Float> floats;
+  std::vector<Float> floats;      // course by course
   std::vector<int> needle;        // live stitches after each course (the cast-on's first)
   // After the last course: the live stitches, each the loops its needle holds.
   std::vector<std::vector<int>> live;

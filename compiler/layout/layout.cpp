@@ -18,6 +18,9 @@ constexpr std::array<glm::dvec3, loop_points> table1 = {{
     {0.7500, 0.0407, 0.1275}, {1.0000, 0.0000, 0.0000},
 }};
 
+// How much of a shift a loop's points take: a parent's head weights are 1 over the needle
+// loop (P6..P10) and 0 at the sinker loops; a child's leg weights the other way round,
+// also 0 at P0 and P16 so that loops of a course keep sharing their end points.
 constexpr std::array<double, loop_points> head = {0.0, 0.0, 0.1, 0.3, 0.55, 0.8, 1.0, 1.0, 1.0,
                                                   1.0, 1.0, 0.8, 0.55, 0.3, 0.1, 0.0, 0.0};
 constexpr std::array<double, loop_points> legs = {0.0, 0.6, 0.9, 0.8, 0.6, 0.4, 0.2, 0.05, 0.0,
@@ -48,8 +51,6 @@ bool purled(const StitchDef& s) {
 }  // namespace
 
 std::span<const glm::dvec3, loop_points> plain_loop_fractions() { return table1; }
-std::span<const double, loop_points> head_weights() { return head; }
-std::span<const double, loop_points> leg_weights() { return legs; }
 
 std::array<glm::dvec3, loop_points> plain_loop(const Gauge& g) {
   std::array<glm::dvec3, loop_points> p;
@@ -69,7 +70,6 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
   out.knitting = pattern.knitting;
   out.loop_width = W;
   out.course_spacing = C;
-  out.thickness = T;
   out.float_behind = -(0.3 * T + 0.6 * thickest);
   out.float_in_front = T + 0.6 * thickest;
 
@@ -89,7 +89,7 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
     }
     out.direction.push_back(direction);
   }
-  for (const knit_graph::Float& f : graph.floats) out.floats.push_back({f.course, f.first, f.last, f.yarn, f.in_front});
+  out.floats = graph.floats;
 
   // Every loop at its needle position by its stitch's template.
   const auto plain = plain_loop(g);
@@ -176,16 +176,15 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
     const double d = pattern.yarns[child.yarn].diameter;
     const double cx = centre_x(child.course, child.wale);
     if (s.family == StitchFamily::cable) {
-      const Loop& parent = out.loops[parents[i].front()];
+      Loop& parent = out.loops[parents[i].front()];
       const double px = centre_x(parent.course, parent.wale);
       // In F cables the stitches moving left cross in front, in B those moving right.
       const bool in_front = s.cable.front ? px > cx : px < cx;
       const double dz = (in_front ? 0.6 : -0.6) * d;
       // Half the way in the child's legs, half in the parent's head: the cross spans two courses.
-      Loop& moved = out.loops[parents[i].front()];
       for (int j = 0; j < loop_points; ++j) {
         child.data_points[j] += glm::dvec3(feet[j] * 0.5 * (px - cx), 0.0, crossing[j] * dz);
-        moved.data_points[j] += head[j] * glm::dvec3(0.5 * (cx - px), 0.0, 0.5 * dz);
+        parent.data_points[j] += head[j] * glm::dvec3(0.5 * (cx - px), 0.0, 0.5 * dz);
       }
       continue;
     }

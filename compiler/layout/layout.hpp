@@ -36,13 +36,6 @@ enum class Template : std::uint8_t {
   bind_off,  // a low loop lying over toward the next one along the top edge
 };
 
-// How much of a loop's parents' heads, and of its own legs, a shift moves, point by point:
-// the head weights are 1 over the needle loop (P6..P10) and 0 at the sinker loops
-// (P0, P16), the leg weights the other way round, also 0 at P0 and P16 so that loops of a
-// course keep sharing their end points.
-std::span<const double, loop_points> head_weights();
-std::span<const double, loop_points> leg_weights();
-
 struct Loop {
   int course = 0;  // 0 is the cast-on; pattern course i is course i + 1; a bind-off is one more
   int wale = 0;    // needle position after its course, left to right in face view
@@ -54,25 +47,16 @@ struct Loop {
   std::array<glm::dvec3, loop_points> data_points;
 };
 
-// A stretch of yarn passing needle positions [first, last] of a course without making
-// loops there: a slipped stitch's float, or a colour's float in stranded work.
-struct Float {
-  int course = 0;
-  int first = 0, last = 0;
-  int yarn = 0;
-  bool in_front = false;
-};
-
 struct Layout {
   int courses = 0;  // including the cast-on (and the bind-off when there is one)
   int wales = 0;    // the widest course's needle positions
   Knitting knitting = Knitting::flat;
-  double loop_width = 0.0, course_spacing = 0.0, thickness = 0.0;
+  double loop_width = 0.0, course_spacing = 0.0;
   std::vector<Loop> loops;        // course by course, left to right within a course
   std::vector<int> needle;        // needle positions per course
   std::vector<double> origin_x;   // x of needle position 0 per course (flat work is centred)
   std::vector<int> direction;     // per course: -1 worked right to left (face view), +1 left to right
-  std::vector<Float> floats;      // slipped stitches' floats
+  std::vector<knit_graph::Float> floats;  // slipped stitches' floats, course by course
   // The z of yarn floating behind and in front of the fabric: clear of the loops' legs.
   double float_behind = 0.0, float_in_front = 0.0;
 };

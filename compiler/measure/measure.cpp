@@ -49,7 +49,8 @@ std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
   return bits(x) << 42 | bits(y) << 21 | bits(z);
 }
 
-double deepest_penetration(const std::vector<Point>& points, double cell, double unit) {
+// Cells one diameter (`cell`, the thickest yarn's) wide; overlaps per that diameter.
+double deepest_penetration(const std::vector<Point>& points, double cell) {
   if (points.empty()) return 0.0;
   auto cell_of = [&](const glm::dvec3& p) {
     return glm::i64vec3(std::floor(p.x / cell), std::floor(p.y / cell), std::floor(p.z / cell));
@@ -84,7 +85,7 @@ double deepest_penetration(const std::vector<Point>& points, double cell, double
             const double reach = a.radius + b.radius;
             if (a.piece == b.piece && std::abs(a.along - b.along) <= 2.0 * reach) continue;
             const double gap = glm::distance(a.at, b.at);
-            if (gap < reach) deepest = std::max(deepest, (reach - gap) / unit);
+            if (gap < reach) deepest = std::max(deepest, (reach - gap) / cell);
           }
         }
   }
@@ -116,7 +117,7 @@ FabricMeasures measure(const Pattern& pattern, const Fabric& fabric) {
   }
   // Distances are compared against each pair's radii; the overlap is reported per
   // diameter of the thickest yarn (one yarn in most fabrics).
-  if (thickest > 0.0) m.deepest_penetration = deepest_penetration(centreline_points(pattern, fabric), thickest, thickest);
+  if (thickest > 0.0) m.deepest_penetration = deepest_penetration(centreline_points(pattern, fabric), thickest);
   return m;
 }
 

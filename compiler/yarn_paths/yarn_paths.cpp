@@ -11,6 +11,12 @@ namespace {
 
 using layout::Layout;
 
+// The first point of a loop along the yarn, course-local.
+glm::dvec3 entry(const Layout& layout, int index) {
+  const layout::Loop& l = layout.loops[index];
+  return l.data_points[layout.direction[l.course] < 0 ? layout::loop_points - 1 : 0];
+}
+
 // Builds one piece, its points in course-local coordinates mapped to the fabric as they go.
 struct PieceBuilder {
   const Layout& layout;
@@ -44,10 +50,9 @@ struct PieceBuilder {
   void add_loop(int index) {
     const layout::Loop& loop = layout.loops[index];
     const bool reversed = layout.direction[loop.course] < 0;
-    const glm::dvec3& start = loop.data_points[reversed ? layout::loop_points - 1 : 0];
     // The yarn's first point on the loop is shared with the loop worked before, or a new one.
     const bool shared = !piece.data_points.empty() &&
-                        glm::distance(layout::to_fabric(layout, start, loop.course), piece.data_points.back()) < 1e-9;
+                        glm::distance(layout::to_fabric(layout, entry(layout, index), loop.course), piece.data_points.back()) < 1e-9;
     piece.loop_first.push_back(shared ? piece.data_points.size() - 1 : piece.data_points.size());
     piece.loops.push_back(index);
     for (int k = shared ? 1 : 0; k < layout::loop_points; ++k)
@@ -64,17 +69,15 @@ struct PieceBuilder {
   }
 };
 
-// The first point of a loop along the yarn, course-local.
-glm::dvec3 entry(const Layout& layout, int index) {
-  const layout::Loop& l = layout.loops[index];
-  return l.data_points[layout.direction[l.course] < 0 ? layout::loop_points - 1 : 0];
-}
-
+// Whether a slip-stitch float in front of the fabric covers x0..x1 of the course.
 bool floats_in_front(const Layout& layout, int course, int yarn, double x0, double x1) {
   const double W = layout.loop_width;
-  for (const layout::Float& f : layout.floats) {
-    if (f.course != course || f.yarn != yarn || !f.in_front) continue;
-    const double a = layout.origin_x[course] + f.first * W, b = layout.origin_x[course] + (f.last + 1) * W;
+  // The graph lists floats course by course: only this course's are looked at.
+  const auto by_course = [](const knit_graph::Float& f, int c) { return f.course < c; };
+  for (auto f = std::lower_bound(layout.floats.begin(), layout.floats.end(), course, by_course);
+       f != layout.floats.end() && f->course == course; ++f) {
+    if (f->yarn != yarn || !f->in_front) continue;
+    const double a = layout.origin_x[course] + f->first * W, b = layout.origin_x[course] + (f->last + 1) * W;
     if (std::min(x0, x1) < b - 1e-9 && std::max(x0, x1) > a + 1e-9) return true;
   }
   return false;
