@@ -65,16 +65,20 @@ int bench(int wales, int courses, const CompileOptions& options, bool header) {
   std::size_t triangles = 0;
   for (const auto& p : fabric.mesh.primitives) triangles += p.indices.size() / 3;
   const double loops = static_cast<double>(fabric.layout.loops.size());
+  const bool relaxed = fabric.relaxed;
+  const double relax_seconds = fabric.relax_seconds;
+  const int relax_iterations = fabric.relaxation.iterations;
   fabric = Fabric{};
   const double copy = memcpy_seconds(bytes);
   if (header) {
     fmt::print("| swatch | sides, tolerance | loops | triangles | .glb MB | script s | mesh s | write s | total s | "
-               "loops/s | triangles/s | mesh / memcpy | peak MiB |\n"
-               "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+               "loops/s | triangles/s | mesh / memcpy | peak MiB | relax s | relax iterations |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   }
-  fmt::print("| {}x{} | {}, {} | {:.0f} | {} | {:.1f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.0f} | {:.3g} | {:.1f} | {:.0f} |\n",
+  fmt::print("| {}x{} | {}, {} | {:.0f} | {} | {:.1f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.0f} | {:.3g} | {:.1f} | {:.0f} | {} | {} |\n",
              wales, courses, options.sides, options.chord_tolerance, loops, triangles, static_cast<double>(bytes) / 1e6,
-             script, mesh, write, total, loops / total, static_cast<double>(triangles) / total, mesh / copy, peak);
+             script, mesh, write, total, loops / total, static_cast<double>(triangles) / total, mesh / copy, peak,
+             relaxed ? fmt::format("{:.3f}", relax_seconds) : "off", relaxed ? std::to_string(relax_iterations) : "");
   return 0;
 }
 

@@ -136,6 +136,16 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric) {
              m.deepest_penetration);
   fmt::print(stderr, "tightest bend {:.3f} tube radii (smallest radius of curvature over the tube's radius)\n", m.tightest_bend);
   fmt::print(stderr, "frame turn  {:.1f} deg (largest between consecutive sweep frames)\n", m.largest_frame_turn);
+  if (const auto shape = knitc::measure::loop_shape(fabric); shape.loops > 0)
+    fmt::print(stderr, "loop shape  l {:.2f} mm, wale spacing {:.2f} mm, course spacing {:.2f} mm: kc {:.2f}, kw {:.2f}, kc/kw {:.2f} ({} inner loops)\n",
+               shape.loop_length, shape.wale_spacing, shape.course_spacing, shape.kc, shape.kw, shape.kc / shape.kw, shape.loops);
+  if (fabric.relaxed) {
+    const auto& r = fabric.relaxation;
+    fmt::print(stderr, "relaxation  {} iterations, {:.2f} s; capsule overlap {:.3f} d before, {:.3f} d after; lengths changed <= {:.2f}%\n",
+               r.iterations, fabric.relax_seconds, r.start_overlap, r.end_overlap, 100.0 * r.length_change);
+  } else {
+    fmt::print(stderr, "relaxation  off\n");
+  }
   if (m.tightest_bend < 1.0)
     fmt::print(stderr, "knitc: warning: a yarn bends tighter than its own radius ({:.2f} tube radii): the tube folds on itself there\n",
                m.tightest_bend);
@@ -258,7 +268,19 @@ void add_compile_options(CLI::App* cmd, Args& a) {
   cmd->add_option("--tolerance", a.compile.chord_tolerance,
                   "chord error of the tube surface as a fraction of the yarn diameter, over --quality's")
       ->check(CLI::Range(1e-4, 1.0));
-  cmd->add_flag("--stats", a.stats, "print counts and bounds of the result");
+  const std::map<std::string, bool> on_off{{"on", true}, {"off", false}};
+  cmd->add_option("--relax", a.compile.relax,
+                  "on: move the yarns apart until no two overlap, keeping their lengths and crossings (docs/relaxation.md); "
+                  "off (default): the layout's curves as they are")
+      ->transform(CLI::CheckedTransformer(on_off, CLI::ignore_case));
+  const std::map<std::string, knitc::relax::Boundary> boundaries{{"free", knitc::relax::Boundary::free},
+                                                                 {"held", knitc::relax::Boundary::held},
+                                                                 {"periodic", knitc::relax::Boundary::periodic}};
+  cmd->add_option("--edges", a.compile.relaxation.boundary,
+                  "while relaxing: free (default), held (the cast-on and last course stay put) or periodic (the swatch is "
+                  "one repeat of an endless fabric)")
+      ->transform(CLI::CheckedTransformer(boundaries, CLI::ignore_case));
+  cmd->add_flag("--stats", a.stats, "print counts, bounds and measures of the result");
   cmd->add_option("--threads", a.compile.threads, "threads to use (default: every core); the output is the same for any")
       ->check(CLI::Range(1, 256));
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
@@ -74,10 +75,8 @@ CurvePiece trace_curve(yarn_paths::Piece path, const Pattern& pattern, const Com
   const auto& u = piece.curve.parameters;
   const std::size_t last = u.size() - 1;
   std::vector<std::size_t> breaks = {0, last};
-  for (std::size_t first : piece.path.loop_first) {
-    breaks.push_back(first);
-    breaks.push_back(first + yarn_paths::points_per_loop);
-  }
+  breaks.insert(breaks.end(), piece.path.loop_first.begin(), piece.path.loop_first.end());
+  breaks.insert(breaks.end(), piece.path.loop_last.begin(), piece.path.loop_last.end());
   std::sort(breaks.begin(), breaks.end());
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
   std::vector<std::size_t> sample_at(u.size(), 0);  // the sample at each break
@@ -87,8 +86,8 @@ CurvePiece trace_curve(yarn_paths::Piece path, const Pattern& pattern, const Com
     piece.samples.insert(piece.samples.end(), s.begin() + 1, s.end());
     sample_at[breaks[k + 1]] = piece.samples.size() - 1;
   }
-  for (std::size_t first : piece.path.loop_first)
-    piece.loop_samples.emplace_back(sample_at[first], sample_at[first + yarn_paths::points_per_loop]);
+  for (std::size_t j = 0; j < piece.path.loops.size(); ++j)
+    piece.loop_samples.emplace_back(sample_at[piece.path.loop_first[j]], sample_at[piece.path.loop_last[j]]);
   piece.frames = sweep::frames(piece.curve.curve, piece.samples, frame_kind(options.loop_model));
   piece.arc_length.assign(piece.samples.size(), 0.0);
   for (std::size_t i = 1; i < piece.samples.size(); ++i)
@@ -228,6 +227,20 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   Fabric fabric;
   fabric.layout = std::move(layout);
   auto paths = yarn_paths::trace(fabric.layout, options.loop_model);
+  if (options.relax) {
+    if (options.progress) options.progress("relax", 0.0);
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<double> diameter;
+    for (const Yarn& y : pattern.yarns) diameter.push_back(y.diameter);
+    relax::Options ro = options.relaxation;
+    ro.threads = options.threads;
+    auto relaxed = relax::relax(fabric.layout, relax::refine(std::move(paths), diameter, ro.spacing), diameter, ro);
+    paths = std::move(relaxed.pieces);
+    fabric.relaxed = true;
+    fabric.relaxation = relaxed.stats;
+    fabric.relax_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (options.progress) options.progress("relax", 1.0);
+  }
   fabric.pieces.resize(paths.size());
   std::atomic<std::size_t> traced{0};
   const std::size_t step = std::max<std::size_t>(1, paths.size() / 100);

@@ -11,6 +11,7 @@
 #include "mesh/mesh.hpp"
 #include "nurbs/nurbs.hpp"
 #include "pattern.hpp"
+#include "relax/relax.hpp"
 #include "sweep/sweep.hpp"
 #include "yarn_paths/yarn_paths.hpp"
 
@@ -37,6 +38,10 @@ struct CompileOptions {
   View view = View::surface;
   int sides = 12;                 // vertices per tube ring, >= 3 (plies get about half, at least 5)
   double chord_tolerance = 0.01;  // as a fraction of the yarn diameter, > 0
+  // Contact relaxation after the layout (see relax/relax.hpp); off: the layout's curves as
+  // they are. Off by default until it holds for every fabric (docs/relaxation.md).
+  bool relax = false;
+  relax::Options relaxation;
   int threads = 0;                // 0: every core; the result is the same for any count
   // Called with a stage's name and how far it is, in [0, 1], from any thread (so it must
   // be thread-safe); for a progress display. It never changes the result.
@@ -59,6 +64,9 @@ struct Fabric {
   layout::Layout layout;
   std::vector<CurvePiece> pieces;
   mesh::Mesh mesh;
+  bool relaxed = false;
+  relax::Stats relaxation;      // when relaxed
+  double relax_seconds = 0.0;   // wall time of the relaxation; not part of any output file
 };
 
 // The frames each loop model sweeps with: Frenet for the paper's, rotation-minimising

@@ -121,4 +121,55 @@ FabricMeasures measure(const Pattern& pattern, const Fabric& fabric) {
   return m;
 }
 
+LoopShape loop_shape(const Fabric& fabric) {
+  const auto& layout = fabric.layout;
+  // Each loop's centre and length, from the piece that owns it.
+  std::vector<glm::dvec3> centre(layout.loops.size(), glm::dvec3(0.0));
+  std::vector<double> length(layout.loops.size(), -1.0);
+  for (const CurvePiece& p : fabric.pieces) {
+    for (std::size_t j = 0; j < p.path.loops.size() && j < p.loop_samples.size(); ++j) {
+      const auto [first, last] = p.loop_samples[j];
+      glm::dvec3 sum(0.0);
+      for (std::size_t s = first; s <= last; ++s) sum += p.frames.origin[s];
+      const auto loop = static_cast<std::size_t>(p.path.loops[j]);
+      centre[loop] = sum / static_cast<double>(last - first + 1);
+      length[loop] = p.arc_length[last] - p.arc_length[first];
+    }
+  }
+  // The loop at (course, needle position), if any.
+  std::vector<std::size_t> course_first(static_cast<std::size_t>(layout.courses) + 1, layout.loops.size());
+  for (std::size_t i = layout.loops.size(); i-- > 0;) course_first[static_cast<std::size_t>(layout.loops[i].course)] = i;
+  for (std::size_t c = course_first.size() - 1; c-- > 0;) course_first[c] = std::min(course_first[c], course_first[c + 1]);
+  auto at = [&](int course, int wale) -> long {
+    if (course < 0 || course >= layout.courses) return -1;
+    for (std::size_t i = course_first[static_cast<std::size_t>(course)];
+         i < layout.loops.size() && layout.loops[i].course == course; ++i)
+      if (layout.loops[i].wale == wale) return static_cast<long>(i);
+    return -1;
+  };
+  LoopShape shape;
+  double wales = 0.0, courses = 0.0;
+  std::size_t wale_pairs = 0, course_pairs = 0;
+  for (std::size_t i = 0; i < layout.loops.size(); ++i) {
+    const auto& l = layout.loops[i];
+    const int needles = layout.needle[static_cast<std::size_t>(l.course)];
+    if (l.course < 2 || l.course > layout.courses - 3 || l.wale < 2 || l.wale > needles - 3 || length[i] < 0.0) continue;
+    const long right = at(l.course, l.wale + 1), up = at(l.course + 1, l.wale);
+    if (right < 0 || up < 0 || length[static_cast<std::size_t>(right)] < 0.0 || length[static_cast<std::size_t>(up)] < 0.0) continue;
+    ++shape.loops;
+    shape.loop_length += length[i];
+    wales += glm::distance(centre[i], centre[static_cast<std::size_t>(right)]);
+    ++wale_pairs;
+    courses += glm::distance(centre[i], centre[static_cast<std::size_t>(up)]);
+    ++course_pairs;
+  }
+  if (shape.loops == 0) return shape;
+  shape.loop_length /= static_cast<double>(shape.loops);
+  shape.wale_spacing = wales / static_cast<double>(wale_pairs);
+  shape.course_spacing = courses / static_cast<double>(course_pairs);
+  shape.kc = shape.loop_length / shape.course_spacing;
+  shape.kw = shape.loop_length / shape.wale_spacing;
+  return shape;
+}
+
 }  // namespace knitc::measure

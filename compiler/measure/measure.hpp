@@ -27,4 +27,18 @@ struct FabricMeasures {
 // Linear in the fabric: a spatial hash of cells one diameter wide finds the close pairs.
 FabricMeasures measure(const Pattern& pattern, const Fabric& fabric);
 
+// The shape of the fabric's inner loops, in the terms of Munden (1959): the loop length
+// l (yarn per stitch, sinker loop to sinker loop), the distances between the centres
+// (mean sample) of neighbouring loops along a course (wale spacing) and along a wale
+// (course spacing), and the loop-shape factors kc = l x courses per mm and kw = l x wales
+// per mm. Inner: neither in the first two nor the last two courses, nor in the first or
+// last two needle positions of their course, and with the same neighbours there. Zero
+// when the fabric has no inner loops.
+struct LoopShape {
+  std::size_t loops = 0;  // inner loops measured
+  double loop_length = 0.0, wale_spacing = 0.0, course_spacing = 0.0;  // mm, means
+  double kc = 0.0, kw = 0.0;
+};
+LoopShape loop_shape(const Fabric& fabric);
+
 }  // namespace knitc::measure

@@ -44,6 +44,13 @@ std::string snapshot(const Pattern& pattern, const Fabric& fabric) {
   out += "penetration " + fixed(m.deepest_penetration, 3) + " d\n";
   out += "tightest bend " + fixed(m.tightest_bend, 3) + " tube radii\n";
   out += "frame turn  " + fixed(m.largest_frame_turn, 3) + " deg\n";
+  // The relaxation's figures, but not its time: a snapshot is the same on every run.
+  if (fabric.relaxed)
+    out += "relaxation  " + std::to_string(fabric.relaxation.iterations) + " iterations, overlap " +
+           fixed(fabric.relaxation.start_overlap, 3) + " -> " + fixed(fabric.relaxation.end_overlap, 3) + " d, length " +
+           fixed(100.0 * fabric.relaxation.length_change, 2) + "%\n";
+  else
+    out += "relaxation  off\n";
   std::size_t vertices = 0, elements = 0, triangles = 0;
   double lo[3], hi[3];
   for (int k = 0; k < 3; ++k) lo[k] = std::numeric_limits<double>::infinity(), hi[k] = -lo[k];

@@ -57,6 +57,7 @@ struct PieceBuilder {
     piece.loops.push_back(index);
     for (int k = shared ? 1 : 0; k < layout::loop_points; ++k)
       piece.data_points.push_back(layout::to_fabric(layout, loop.data_points[reversed ? layout::loop_points - 1 - k : k], loop.course));
+    piece.loop_last.push_back(piece.data_points.size() - 1);
     last_local = loop.data_points[reversed ? 0 : layout::loop_points - 1];
     last_course = loop.course;
     last_wale = loop.wale;
@@ -165,6 +166,7 @@ std::vector<Piece> trace(const Layout& layout, LoopModel model) {
     p.yarn = l.yarn;
     p.loops = {static_cast<int>(i)};
     p.loop_first = {0};
+    p.loop_last = {points_per_loop};
     for (const auto& q : l.data_points) p.data_points.push_back(layout::to_fabric(layout, q, l.course));
     pieces.push_back(std::move(p));
   }

@@ -21,11 +21,12 @@ struct Piece {
   int yarn = 0;                          // index into Pattern::yarns
   std::vector<glm::dvec3> data_points;   // mm, fabric coordinates, no two consecutive equal
   // The loops along the piece in working order, as indices into Layout::loops. Loop j
-  // passes through data_points[loop_first[j] .. loop_first[j] + 16] (its P0..P16, or
-  // P16..P0 when worked right to left). Points outside every loop are floats, turns at
+  // passes through data_points[loop_first[j] .. loop_last[j]] (its P0..P16, or P16..P0
+  // when worked right to left; as traced, loop_last[j] = loop_first[j] + 16, more once
+  // the relaxation has refined the piece). Points outside every loop are floats, turns at
   // the selvedge and tails.
   std::vector<int> loops;
-  std::vector<std::size_t> loop_first;
+  std::vector<std::size_t> loop_first, loop_last;
 };
 
 inline constexpr int points_per_loop = layout::loop_points - 1;

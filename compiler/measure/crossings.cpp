@@ -1,0 +1,152 @@
+#include "measure/crossings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <unordered_map>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+namespace knitc::measure {
+
+namespace {
+
+struct Segment {
+  glm::dvec3 p, q;
+  std::uint32_t piece, index;
+};
+
+std::uint64_t cell_key(std::int64_t x, std::int64_t y) {
+  return static_cast<std::uint64_t>(x + (1ll << 31)) << 32 | static_cast<std::uint64_t>(y + (1ll << 31));
+}
+
+auto order(const Crossing& c) { return std::tie(c.piece_a, c.piece_b, c.segment_a, c.segment_b); }
+
+}  // namespace
+
+std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near) {
+  std::vector<Segment> segments;
+  double longest = 0.0;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const auto& points = pieces[i].data_points;
+    for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+      segments.push_back({points[k], points[k + 1], static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
+      longest = std::max(longest, glm::distance(glm::dvec2(points[k]), glm::dvec2(points[k + 1])));
+    }
+  }
+  std::vector<Crossing> out;
+  if (segments.empty() || longest <= 0.0) return out;
+  // Each segment in the cells its box covers (at most four: a cell is as long as the longest).
+  const double cell = longest;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
+  grid.reserve(segments.size());
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    const glm::dvec2 lo = glm::min(glm::dvec2(segments[s].p), glm::dvec2(segments[s].q)) / cell;
+    const glm::dvec2 hi = glm::max(glm::dvec2(segments[s].p), glm::dvec2(segments[s].q)) / cell;
+    for (auto x = static_cast<std::int64_t>(std::floor(lo.x)); x <= static_cast<std::int64_t>(std::floor(hi.x)); ++x)
+      for (auto y = static_cast<std::int64_t>(std::floor(lo.y)); y <= static_cast<std::int64_t>(std::floor(hi.y)); ++y)
+        grid[cell_key(x, y)].push_back(static_cast<std::uint32_t>(s));
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates;
+  for (const auto& [key, list] : grid)
+    for (std::size_t i = 0; i < list.size(); ++i)
+      for (std::size_t j = i + 1; j < list.size(); ++j) candidates.emplace_back(std::min(list[i], list[j]), std::max(list[i], list[j]));
+  std::sort(candidates.begin(), candidates.end());  // the map's order is not ours: sort, then drop repeats
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  for (const auto& [i, j] : candidates) {
+    const Segment &a = segments[i], &b = segments[j];
+    if (a.piece == b.piece && (a.index > b.index ? a.index - b.index : b.index - a.index) < near) continue;
+    const glm::dvec2 p(a.p), r = glm::dvec2(a.q) - p, q(b.p), s = glm::dvec2(b.q) - q;
+    const double denom = r.x * s.y - r.y * s.x;
+    if (std::abs(denom) < 1e-12 * (glm::dot(r, r) + glm::dot(s, s))) continue;  // parallel
+    const glm::dvec2 qp = q - p;
+    const double t = (qp.x * s.y - qp.y * s.x) / denom, u = (qp.x * r.y - qp.y * r.x) / denom;
+    // Half-open, so a crossing through a shared point counts once.
+    if (t < 0.0 || t >= 1.0 || u < 0.0 || u >= 1.0) continue;
+    const double za = a.p.z + t * (a.q.z - a.p.z), zb = b.p.z + u * (b.q.z - b.p.z);
+    out.push_back({a.piece, a.index, b.piece, b.index, za - zb});
+  }
+  std::sort(out.begin(), out.end(), [](const Crossing& x, const Crossing& y) { return order(x) < order(y); });
+  return out;
+}
+
+CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window) {
+  CrossingChanges changes;
+  auto gap = [](std::uint32_t x, std::uint32_t y) { return x > y ? x - y : y - x; };
+  auto less = [](const Crossing& x, const Crossing& y) { return order(x) < order(y); };
+  // The crossings of `list` between c's pieces within `w` segments on both.
+  auto near = [&](const std::vector<Crossing>& list, const Crossing& c, std::uint32_t w, auto&& visit) {
+    const Crossing low{c.piece_a, c.segment_a > w ? c.segment_a - w : 0, c.piece_b, 0, 0.0};
+    for (auto it = std::lower_bound(list.begin(), list.end(), low, less);
+         it != list.end() && it->piece_a == c.piece_a && it->piece_b == c.piece_b && it->segment_a <= c.segment_a + w; ++it)
+      if (gap(it->segment_b, c.segment_b) <= w) visit(static_cast<std::size_t>(it - list.begin()));
+  };
+  auto tied = [](const Crossing& c) { return std::abs(c.depth) < 1e-3; };  // mm: both yarns at one height
+  std::vector<char> left_out(before.size(), 0);
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    if (tied(before[i])) {
+      left_out[i] = 1;
+      ++changes.ties;
+      continue;
+    }
+  }
+  // Every candidate match, nearest first (then in order): taken when both ends are free.
+  struct Candidate {
+    std::uint32_t distance;
+    std::size_t from, to;
+  };
+  std::vector<Candidate> candidates;
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    near(after, before[i], window, [&](std::size_t j) {
+      candidates.push_back({gap(after[j].segment_a, before[i].segment_a) + gap(after[j].segment_b, before[i].segment_b), i, j});
+    });
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+    return std::tie(x.distance, x.from, x.to) < std::tie(y.distance, y.from, y.to);
+  });
+  std::vector<char> matched_before(before.size(), 0), matched_after(after.size(), 0);
+  for (const Candidate& c : candidates) {
+    if (matched_before[c.from] || matched_after[c.to]) continue;
+    matched_before[c.from] = matched_after[c.to] = 1;
+    if (left_out[c.from]) continue;  // a tie: either way is its way
+    if ((before[c.from].depth > 0.0) == (after[c.to].depth > 0.0)) {
+      ++changes.kept;
+    } else {
+      ++changes.flipped;
+    }
+  }
+  // The unmatched, paired off two by two where the same yarn is in front at both.
+  auto alone = [&](const std::vector<Crossing>& list, const std::vector<char>& skip) {
+    std::vector<char> paired(list.size(), 0);
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (skip[i] || paired[i]) continue;
+      std::size_t partner = list.size();
+      near(list, list[i], window, [&](std::size_t j) {
+        if (partner == list.size() && j != i && !skip[j] && !paired[j] && (list[j].depth > 0.0) == (list[i].depth > 0.0)) partner = j;
+      });
+      if (partner == list.size()) {
+        ++count;
+      } else {
+        paired[i] = paired[partner] = 1;
+      }
+    }
+    return count;
+  };
+  std::vector<char> skip_before(before.size()), skip_after(after.size());
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    skip_before[i] = left_out[i] || matched_before[i];
+    changes.lost += skip_before[i] ? 0 : 1;
+  }
+  for (std::size_t j = 0; j < after.size(); ++j) {
+    skip_after[j] = matched_after[j];
+    changes.found += skip_after[j] ? 0 : 1;
+  }
+  changes.lost_alone = alone(before, skip_before);
+  changes.found_alone = alone(after, skip_after);
+  return changes;
+}
+
+}  // namespace knitc::measure

@@ -1,0 +1,45 @@
+// The fabric as a knot diagram: where two stretches of yarn cross, seen from the face
+// (along -z), and which passes in front. For flat work; a tube would need its own
+// projection. Tells whether a change to the geometry (the relaxation) kept every yarn on
+// its side of every other.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "yarn_paths/yarn_paths.hpp"
+
+namespace knitc::measure {
+
+struct Crossing {
+  // Segment k of a piece joins its data points k and k + 1. (piece_a, segment_a) is
+  // before (piece_b, segment_b) in that order.
+  std::uint32_t piece_a = 0, segment_a = 0, piece_b = 0, segment_b = 0;
+  double depth = 0.0;  // mm, z of a minus z of b where they cross: > 0, a is in front
+};
+
+// Every crossing of two segments' projections onto the xy plane, but of two segments of
+// one piece less than `near` data points apart along it (a yarn's own bends). Ordered by
+// (piece_a, piece_b, segment_a, segment_b). A grid of cells one segment long: linear.
+std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near = 2);
+
+struct CrossingChanges {
+  std::size_t kept = 0;     // matched, same yarn in front
+  std::size_t flipped = 0;  // matched, the other yarn in front
+  std::size_t lost = 0;     // before with no match after
+  std::size_t found = 0;    // after with no match before
+  std::size_t ties = 0;     // before at one height (|depth| < 1 um): no side to keep, left out
+  // Of the lost (and of the new): those that do not pair up with another lost (new) one
+  // between the same pieces within the window, the same yarn in front. Two crossings of
+  // one yarn over another may vanish or appear together as the yarns slide apart or
+  // together (Reidemeister's second move) with nobody passing through anybody; a lone
+  // one cannot.
+  std::size_t lost_alone = 0, found_alone = 0;
+};
+
+// Matches crossings before to crossings after between the same two pieces within
+// `window` segments along each (the pieces' points must correspond, as the relaxation
+// keeps them), one to one, nearest first, and counts what became of them.
+CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window);
+
+}  // namespace knitc::measure

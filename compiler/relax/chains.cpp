@@ -1,0 +1,89 @@
+#include "relax/chains.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "nurbs/nurbs.hpp"
+
+namespace knitc::relax {
+
+std::vector<yarn_paths::Piece> refine(std::vector<yarn_paths::Piece> pieces, const std::vector<double>& diameter,
+                                      double spacing) {
+  assert(spacing > 0.0);
+  for (yarn_paths::Piece& piece : pieces) {
+    if (piece.data_points.size() < 2) continue;
+    const double step = spacing * diameter[static_cast<std::size_t>(piece.yarn)];
+    const auto curve = nurbs::interpolate(piece.data_points);
+    std::vector<glm::dvec3> points;
+    std::vector<std::size_t> new_index(piece.data_points.size());
+    points.reserve(piece.data_points.size() * 3);
+    for (std::size_t k = 0; k < piece.data_points.size(); ++k) {
+      if (k > 0) {
+        const int n = static_cast<int>(std::ceil(glm::distance(piece.data_points[k - 1], piece.data_points[k]) / step));
+        const double u0 = curve.parameters[k - 1], u1 = curve.parameters[k];
+        for (int j = 1; j < n; ++j) points.push_back(nurbs::evaluate(curve.curve, u0 + (u1 - u0) * j / n));
+      }
+      new_index[k] = points.size();
+      points.push_back(piece.data_points[k]);
+    }
+    for (std::size_t& first : piece.loop_first) first = new_index[first];
+    for (std::size_t& last : piece.loop_last) last = new_index[last];
+    piece.data_points = std::move(points);
+  }
+  return pieces;
+}
+
+Chains chains_of(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& pieces,
+                 const std::vector<double>& diameter, Boundary boundary) {
+  Chains c;
+  std::size_t total = 0;
+  for (const auto& p : pieces) total += p.data_points.size();
+  c.pos.reserve(total);
+  c.radius.reserve(total);
+  c.along.reserve(total);
+  c.inv_mass.reserve(total);
+  c.piece.reserve(total);
+  std::vector<std::int8_t> on_loop;  // per point: 0 off every loop, 1 on one, 2 on a held one
+  on_loop.reserve(total);
+  const int last_course = layout.courses - 1;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const auto& p = pieces[i];
+    c.first.push_back(c.pos.size());
+    const double d = diameter[static_cast<std::size_t>(p.yarn)];
+    c.thickest = std::max(c.thickest, d);
+    std::vector<std::int8_t> mark(p.data_points.size(), 0);
+    for (std::size_t j = 0; j < p.loops.size(); ++j) {
+      const auto& loop = layout.loops[static_cast<std::size_t>(p.loops[j])];
+      const bool held = boundary == Boundary::held && (loop.course == 0 || loop.course == last_course);
+      for (std::size_t k = p.loop_first[j]; k <= p.loop_last[j]; ++k) mark[k] = std::max<std::int8_t>(mark[k], held ? 2 : 1);
+    }
+    double along = 0.0;
+    for (std::size_t k = 0; k < p.data_points.size(); ++k) {
+      if (k > 0) along += glm::distance(p.data_points[k - 1], p.data_points[k]);
+      c.pos.push_back(p.data_points[k]);
+      c.radius.push_back(0.5 * d);
+      c.along.push_back(along);
+      c.inv_mass.push_back(mark[k] == 2 ? 0.0 : 1.0);
+      c.piece.push_back(static_cast<std::uint32_t>(i));
+      on_loop.push_back(mark[k]);
+    }
+  }
+  c.first.push_back(c.pos.size());
+  c.rest = c.pos;
+  c.segment.assign(c.pos.size(), 0);
+  c.contactable.assign(c.pos.size(), 0);
+  c.rest_length.assign(c.pos.size(), 0.0);
+  for (std::size_t i = 0; i + 1 < c.pos.size(); ++i) {
+    if (c.piece[i] != c.piece[i + 1]) continue;
+    c.segment[i] = 1;
+    c.rest_length[i] = glm::distance(c.pos[i], c.pos[i + 1]);
+    c.longest = std::max(c.longest, c.rest_length[i]);
+    c.contactable[i] = boundary != Boundary::periodic || (on_loop[i] > 0 && on_loop[i + 1] > 0);
+  }
+  return c;
+}
+
+}  // namespace knitc::relax

@@ -1,0 +1,354 @@
+#include "relax/contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "parallel.hpp"
+
+namespace knitc::relax {
+
+void closest_points(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0, const glm::dvec3& q1, double& s,
+                    double& t) {
+  const glm::dvec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+  const double tiny = 1e-18;
+  if (a <= tiny && e <= tiny) {
+    s = t = 0.0;
+    return;
+  }
+  if (a <= tiny) {
+    s = 0.0;
+    t = std::clamp(f / e, 0.0, 1.0);
+    return;
+  }
+  const double c = glm::dot(d1, r);
+  if (e <= tiny) {
+    t = 0.0;
+    s = std::clamp(-c / a, 0.0, 1.0);
+    return;
+  }
+  const double b = glm::dot(d1, d2), denom = a * e - b * b;
+  s = denom > tiny ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  t = (b * s + f) / e;
+  if (t < 0.0) {
+    t = 0.0;
+    s = std::clamp(-c / a, 0.0, 1.0);
+  } else if (t > 1.0) {
+    t = 1.0;
+    s = std::clamp((b - c) / a, 0.0, 1.0);
+  }
+}
+
+namespace {
+
+std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
+  auto bits = [](std::int64_t v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1fffffu; };
+  return bits(x) << 42 | bits(y) << 21 | bits(z);
+}
+
+glm::dvec3 midpoint(const Chains& c, std::size_t i) { return 0.5 * (c.pos[i] + c.pos[i + 1]); }
+double along_mid(const Chains& c, std::size_t i) { return c.along[i] + 0.5 * c.rest_length[i]; }
+
+}  // namespace
+
+// Where two segments cross seen from the face (their xy projections meet, half-open as
+// measure::crossings counts them): the parameters along each. False if they do not.
+bool Contacts::crossing(const Chains& c, const Pair& p, double& s, double& t) const {
+  const glm::dvec3 offset = shift(p);
+  const glm::dvec2 a0(c.pos[p.a]), ra = glm::dvec2(c.pos[p.a + 1]) - a0;
+  const glm::dvec2 b0 = glm::dvec2(c.pos[p.b] + offset), rb = glm::dvec2(c.pos[p.b + 1] + offset) - b0;
+  const double denom = ra.x * rb.y - ra.y * rb.x;
+  if (std::abs(denom) < 1e-12 * (glm::dot(ra, ra) + glm::dot(rb, rb))) return false;
+  const glm::dvec2 ab = b0 - a0;
+  s = (ab.x * rb.y - ab.y * rb.x) / denom;
+  t = (ab.x * ra.y - ab.y * ra.x) / denom;
+  return s >= 0.0 && s < 1.0 && t >= 0.0 && t < 1.0;
+}
+
+std::int8_t Contacts::side_of(const Chains& c, const Pair& p) const {
+  if (round_) return 0;
+  double s, t;
+  if (!crossing(c, p, s, t)) return 0;
+  const double za = glm::mix(c.pos[p.a].z, c.pos[p.a + 1].z, s), zb = glm::mix(c.pos[p.b].z, c.pos[p.b + 1].z, t);
+  return za > zb ? 1 : za < zb ? -1 : 0;
+}
+
+double Contacts::separation(const Chains& c, const Pair& p, glm::dvec3& push, double& s, double& t) const {
+  const glm::dvec3 offset = shift(p);
+  if (p.side != 0) {
+    // A crossing must keep its yarn in front: if the one behind has come through, it goes
+    // back straight along the fabric's normal, from where they cross.
+    double cs, ct;
+    if (crossing(c, p, cs, ct)) {
+      const double za = glm::mix(c.pos[p.a].z, c.pos[p.a + 1].z, cs), zb = glm::mix(c.pos[p.b].z, c.pos[p.b + 1].z, ct);
+      const double ahead = p.side * (za - zb);
+      if (ahead <= 0.0) {
+        s = cs, t = ct;
+        push = glm::dvec3(0.0, 0.0, p.side);
+        return ahead;
+      }
+    }
+  }
+  const glm::dvec3 &a0 = c.pos[p.a], &a1 = c.pos[p.a + 1];
+  const glm::dvec3 b0 = c.pos[p.b] + offset, b1 = c.pos[p.b + 1] + offset;
+  closest_points(a0, a1, b0, b1, s, t);
+  push = glm::mix(a0, a1, s) - glm::mix(b0, b1, t);
+  const double dist = glm::length(push);
+  if (dist > 1e-12) {
+    push /= dist;
+  } else {  // touching centrelines and no side: part them the way they lay in the layout
+    push = glm::mix(c.rest[p.a], c.rest[p.a + 1], s) - glm::mix(c.rest[p.b], c.rest[p.b + 1], t) - offset;
+    push = glm::length(push) > 1e-12 ? glm::normalize(push) : glm::dvec3(0.0, 0.0, 1.0);
+  }
+  return dist;
+}
+
+std::int8_t Contacts::neighbours_side(const Pair& p) const {
+  for (int da = -1; da <= 1; ++da)
+    for (int db = -1; db <= 1; ++db) {
+      if ((da == 0 && db == 0) || (da < 0 && p.a == 0) || (db < 0 && p.b == 0)) continue;
+      const Pair key{static_cast<std::uint32_t>(static_cast<int>(p.a) + da), static_cast<std::uint32_t>(static_cast<int>(p.b) + db),
+                     p.sx, p.sy, 0, 0, 0.0f};
+      const auto it = std::lower_bound(by_segments_.begin(), by_segments_.end(), key, [&](std::uint32_t x, const Pair& y) {
+        const Pair& q = pairs_[x];
+        return q.a != y.a ? q.a < y.a : q.b != y.b ? q.b < y.b : q.sx != y.sx ? q.sx < y.sx : q.sy < y.sy;
+      });
+      if (it == by_segments_.end()) continue;
+      const Pair& q = pairs_[*it];
+      if (q.a == key.a && q.b == key.b && q.sx == key.sx && q.sy == key.sy && q.side != 0) return q.side;
+    }
+  return 0;
+}
+
+double Contacts::gap(const Chains& c, const Pair& p) const {
+  glm::dvec3 push;
+  double s, t;
+  return separation(c, p, push, s, t) - p.reach;
+}
+
+void Contacts::find(const Chains& c) {
+  ++builds_;
+  built_at_ = c.pos;
+  // The sides of the pairs listed so far, to look up by (a, b, image).
+  std::vector<Pair> previous = std::move(pairs_);
+  auto pair_order = [](const Pair& x, const Pair& y) {
+    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.sx != y.sx ? x.sx < y.sx : x.sy < y.sy;
+  };
+  std::sort(previous.begin(), previous.end(), pair_order);
+  pairs_.clear();
+  const std::size_t n = c.pos.size();
+  double longest = 0.0;
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    if (!c.contactable[i]) continue;
+    longest = std::max(longest, glm::distance(c.pos[i], c.pos[i + 1]));
+    const glm::dvec3 m = midpoint(c, i);
+    lo = glm::min(lo, glm::dvec2(m));
+    hi = glm::max(hi, glm::dvec2(m));
+  }
+  if (lo.x > hi.x) {  // nothing takes part
+    strip_first_.assign(1, 0);
+    across_first_ = 0;
+    return;
+  }
+  const double cell = c.thickest + margin_ + longest;
+  auto cell_of = [&](const glm::dvec3& p) {
+    return glm::i64vec3(std::floor(p.x / cell), std::floor(p.y / cell), std::floor(p.z / cell));
+  };
+  // A column of cells per (x, y); a column's entries in order of their cell's z, then
+  // segment. The nine columns around a segment hold every candidate, each a short run.
+  struct Entry {
+    std::uint64_t column;
+    std::int64_t z;
+    std::uint32_t segment;
+    std::int8_t sx, sy;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(n);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    if (!c.contactable[i]) continue;
+    const glm::dvec3 m = midpoint(c, i);
+    // Periodic: a segment near an edge also stands in for its image across the swatch.
+    for (int sx = -1; sx <= 1; ++sx) {
+      if (sx != 0 && (period_.x == 0.0 || (sx > 0 ? m.x - lo.x : hi.x - m.x) > cell)) continue;
+      for (int sy = -1; sy <= 1; ++sy) {
+        if (sy != 0 && (period_.y == 0.0 || (sy > 0 ? m.y - lo.y : hi.y - m.y) > cell)) continue;
+        const auto k = cell_of(m + glm::dvec3(sx * period_.x, sy * period_.y, 0.0));
+        entries.push_back({cell_key(k.x, k.y, 0), k.z, static_cast<std::uint32_t>(i), static_cast<std::int8_t>(sx),
+                           static_cast<std::int8_t>(sy)});
+      }
+    }
+  }
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.column != b.column     ? a.column < b.column
+           : a.z != b.z             ? a.z < b.z
+           : a.segment != b.segment ? a.segment < b.segment
+           : a.sx != b.sx           ? a.sx < b.sx
+                                    : a.sy < b.sy;
+  });
+  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> columns;
+  columns.reserve(entries.size() / 4 + 1);
+  for (std::size_t i = 0; i < entries.size();) {
+    std::size_t j = i;
+    while (j < entries.size() && entries[j].column == entries[i].column) ++j;
+    columns.emplace(entries[i].column, std::make_pair(i, j));
+    i = j;
+  }
+  // Each block of segments its own list, joined in order: the same list for any thread count.
+  const std::size_t blocks = std::max<std::size_t>(1, std::min<std::size_t>(64, n / 4096));
+  std::vector<std::vector<Pair>> found(blocks);
+  parallel_for(blocks, threads_, [&](std::size_t block) {
+    const std::size_t from = n * block / blocks, to = n * (block + 1) / blocks;
+    for (std::size_t a = from; a < to && a + 1 < n; ++a) {
+      if (!c.contactable[a]) continue;
+      const glm::dvec3 ma = midpoint(c, a);
+      const double half_a = 0.5 * glm::distance(c.pos[a], c.pos[a + 1]);
+      const auto k = cell_of(ma);
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy) {
+          const auto hit = columns.find(cell_key(k.x + dx, k.y + dy, 0));
+          if (hit == columns.end()) continue;
+          for (std::size_t e = hit->second.first; e < hit->second.second; ++e) {
+            const Entry& b = entries[e];
+            if (b.z < k.z - 1) continue;
+            if (b.z > k.z + 1) break;
+            const std::size_t bs = b.segment;
+            if (bs <= a) continue;
+            if (b.sx == 0 && b.sy == 0 && c.piece[a] == c.piece[bs] &&
+                std::abs(along_mid(c, a) - along_mid(c, bs)) <= 2.0 * (c.radius[a] + c.radius[bs]))
+              continue;
+            const glm::dvec3 offset(b.sx * period_.x, b.sy * period_.y, 0.0);
+            const glm::dvec3 between = ma - midpoint(c, bs) - offset;
+            const double bound = c.radius[a] + c.radius[bs] + margin_ + half_a + 0.5 * glm::distance(c.pos[bs], c.pos[bs + 1]);
+            if (glm::dot(between, between) > bound * bound) continue;
+            const auto held = static_cast<std::uint8_t>((c.inv_mass[a] == 0.0 ? 1 : 0) | (c.inv_mass[a + 1] == 0.0 ? 2 : 0) |
+                                                        (c.inv_mass[bs] == 0.0 ? 4 : 0) | (c.inv_mass[bs + 1] == 0.0 ? 8 : 0));
+            Pair pair{static_cast<std::uint32_t>(a), b.segment, b.sx, b.sy, held, 0, static_cast<float>(c.radius[a] + c.radius[bs])};
+            const auto known = std::lower_bound(previous.begin(), previous.end(), pair, pair_order);
+            if (known != previous.end() && !pair_order(pair, *known) && known->side != 0)
+              pair.side = known->side;
+            else
+              pair.side = side_of(c, pair);
+            if (gap(c, pair) < margin_) found[block].push_back(pair);
+          }
+        }
+    }
+  });
+  // Strips one cell high across the courses; a pair belongs to its first segment's strip
+  // when its second is in the same or the next one, else to the few worked alone.
+  const auto strips = static_cast<std::size_t>(std::floor((hi.y - lo.y) / cell)) + 1;
+  auto strip_of = [&](std::uint32_t segment) {
+    return std::min(strips - 1, static_cast<std::size_t>(std::max(0.0, std::floor((midpoint(c, segment).y - lo.y) / cell))));
+  };
+  std::vector<std::size_t> count(strips + 1, 0);
+  std::size_t total = 0;
+  for (const auto& list : found) total += list.size();
+  std::vector<std::uint32_t> strip_of_pair;
+  strip_of_pair.reserve(total);
+  for (const auto& list : found)
+    for (const Pair& p : list) {
+      const std::size_t ka = strip_of(p.a), kb = strip_of(p.b);
+      const std::size_t k = p.sy == 0 && (ka > kb ? ka - kb : kb - ka) <= 1 ? ka : strips;
+      strip_of_pair.push_back(static_cast<std::uint32_t>(k));
+      ++count[k];
+    }
+  std::vector<std::size_t> start(strips + 2, 0);
+  for (std::size_t k = 0; k <= strips; ++k) start[k + 1] = start[k] + count[k];
+  across_first_ = start[strips];
+  strip_first_.assign(start.begin(), start.begin() + static_cast<std::ptrdiff_t>(strips + 1));
+  pairs_.resize(total);
+  std::vector<std::size_t> next = std::move(start);
+  std::size_t i = 0;
+  for (const auto& list : found)
+    for (const Pair& p : list) pairs_[next[strip_of_pair[i++]]++] = p;
+  by_segments_.resize(pairs_.size());
+  for (std::size_t k = 0; k < pairs_.size(); ++k) by_segments_[k] = static_cast<std::uint32_t>(k);
+  std::sort(by_segments_.begin(), by_segments_.end(), [&](std::uint32_t x, std::uint32_t y) { return pair_order(pairs_[x], pairs_[y]); });
+}
+
+bool Contacts::stale(const Chains& c) const {
+  const double limit = 0.25 * margin_ * margin_;  // half the margin, squared
+  for (std::size_t i = 0; i < c.pos.size(); ++i) {
+    const glm::dvec3 moved = c.pos[i] - built_at_[i];
+    if (glm::dot(moved, moved) > limit) return true;
+  }
+  return false;
+}
+
+Contacts::Sweep Contacts::push_apart(Chains& c, double skin) {
+  auto push = [&](Pair& p, Sweep& sweep) {
+    const std::size_t a = p.a, b = p.b;
+    const glm::dvec3 offset = shift(p);
+    const double reach = p.reach;
+    // Most listed pairs are not touching: two spheres around the segments tell at once.
+    const glm::dvec3 ha = 0.5 * (c.pos[a + 1] - c.pos[a]), hb = 0.5 * (c.pos[b + 1] - c.pos[b]);
+    const glm::dvec3 between = (c.pos[a] + ha) - (c.pos[b] + hb + offset);
+    const double bound = reach * (1.0 + skin) + std::sqrt(glm::dot(ha, ha)) + std::sqrt(glm::dot(hb, hb));
+    if (glm::dot(between, between) > bound * bound) return;
+    double s, t;
+    glm::dvec3 normal;
+    const double dist = separation(c, p, normal, s, t);
+    // A crossing's side is remembered from the first sweep the two cross seen from the
+    // face, or taken over from a neighbouring pair that crossed before: the crossing has
+    // slid along the yarn (a push may move it a segment at once). Kept from then on.
+    if (p.side == 0 && dist > 0.0 && (p.side = side_of(c, p)) != 0) {
+      const std::int8_t before = neighbours_side(p);
+      if (before != 0) p.side = before;
+    }
+    const double target = reach * (1.0 + skin);
+    sweep.deepest = std::max(sweep.deepest, reach - dist);
+    if (dist >= target) return;
+    const double w[4] = {p.held & 1 ? 0.0 : 1.0 - s, p.held & 2 ? 0.0 : s, p.held & 4 ? 0.0 : 1.0 - t, p.held & 8 ? 0.0 : t};
+    const double sum = (1.0 - s) * w[0] + s * w[1] + (1.0 - t) * w[2] + t * w[3];
+    if (sum > 0.0) {
+      const double lambda = (target - dist) / sum;
+      c.pos[a] += lambda * w[0] * normal;
+      c.pos[a + 1] += lambda * w[1] * normal;
+      c.pos[b] -= lambda * w[2] * normal;
+      c.pos[b + 1] -= lambda * w[3] * normal;
+    }
+  };
+  const std::size_t strips = strip_first_.size() - 1;
+  std::vector<Sweep> per_strip(strips);
+  for (std::size_t colour = 0; colour < 4; ++colour) {
+    const std::size_t count = strips > colour ? (strips - colour + 3) / 4 : 0;
+    parallel_for(count, threads_, [&](std::size_t j) {
+      const std::size_t k = colour + 4 * j;
+      Sweep strip;  // a local: neighbouring strips' slots share a cache line
+      for (std::size_t i = strip_first_[k]; i < strip_first_[k + 1]; ++i) push(pairs_[i], strip);
+      per_strip[k] = strip;
+    });
+  }
+  Sweep all;
+  for (std::size_t i = across_first_; i < pairs_.size(); ++i) push(pairs_[i], all);
+  for (const Sweep& s : per_strip) all.deepest = std::max(all.deepest, s.deepest);
+  return all;
+}
+
+double Contacts::deepest(const Chains& c) const {
+  double worst = 0.0;
+  for (const Pair& p : pairs_) worst = std::max(worst, -gap(c, p));
+  return worst;
+}
+
+void Contacts::moved(const std::function<void(glm::dvec3&)>& move, glm::dvec2 growth) {
+  for (auto& p : built_at_) move(p);
+  period_ *= growth;
+}
+
+std::vector<Contacts::Worst> Contacts::worst(const Chains& c, std::size_t count) const {
+  std::vector<Worst> all;
+  all.reserve(pairs_.size());
+  for (const Pair& p : pairs_) all.push_back({gap(c, p), p.a, p.b});
+  const std::size_t keep = std::min(count, all.size());
+  std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(keep), all.end(),
+                    [](const Worst& x, const Worst& y) { return x.gap != y.gap ? x.gap < y.gap : x.a < y.a; });
+  all.resize(keep);
+  return all;
+}
+
+}  // namespace knitc::relax

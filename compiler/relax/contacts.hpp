@@ -1,0 +1,91 @@
+// Contacts between yarn segments, as capsules of the yarn's radius. Internal to relax/.
+//
+// The pairs of segments closer than their radii plus a margin are found with a grid
+// and kept (a Verlet list) until some point has moved half the margin. Pushing them
+// apart goes strip by strip across the courses: strips four apart share no point, so
+// the strips of one of four classes are worked at once, and the result is the same for
+// any number of threads.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "relax/chains.hpp"
+
+namespace knitc::relax {
+
+class Contacts {
+ public:
+  // period: the swatch's repeat in x and y, mm (0: not periodic that way). margin, mm.
+  // round: the fabric is a tube (work in the round), whose crossings are not kept by side.
+  Contacts(glm::dvec2 period, double margin, bool round, int threads)
+      : period_(period), margin_(margin), round_(round), threads_(threads) {}
+
+  // Finds every pair of contactable segments whose capsules are less than the margin apart:
+  // of different pieces, or of one piece more than two diameters apart along it.
+  void find(const Chains& chains);
+  // Whether a point has moved half the margin since find(), so a pair may be missing.
+  bool stale(const Chains& chains) const;
+  // One sweep: every overlapping pair pushed to its radii plus `skin` (a fraction) apart.
+  struct Sweep {
+    double deepest = 0.0;  // mm, the deepest overlap met (before its push), 0 if none
+  };
+  Sweep push_apart(Chains& chains, double skin);
+  // The deepest overlap of the pairs, mm, without moving anything.
+  double deepest(const Chains& chains) const;
+  // The whole fabric was moved by `move` (a change of size): so are the positions the
+  // list was built at, and the period grows by `growth` (1 + fraction, per axis).
+  void moved(const std::function<void(glm::dvec3&)>& move, glm::dvec2 growth);
+
+  std::size_t size() const { return pairs_.size(); }
+  glm::dvec2 period() const { return period_; }
+  int builds() const { return builds_; }
+
+  struct Worst {
+    double gap;  // mm, negative: overlap
+    std::uint32_t a, b;
+  };
+  std::vector<Worst> worst(const Chains& chains, std::size_t count) const;  // the deepest pairs first
+
+ private:
+  struct Pair {
+    std::uint32_t a, b;    // segments
+    std::int8_t sx, sy;    // b's image: shifted by (sx, sy) periods
+    std::uint8_t held;     // bit k: point k of (a, a + 1, b, b + 1) does not move
+    // Which passes in front where the two cross seen from the face: 1 a, -1 b; 0 not
+    // known (they have not crossed while listed, or the fabric is a tube). Set the first
+    // time they cross, and kept while the pair is listed, and on into the next list.
+    std::int8_t side;
+    float reach;           // mm, the sum of the two radii
+  };
+  // The distance between the pair's centrelines, mm, negative when a has passed to the
+  // wrong side of b; and the way to push a (away from b).
+  double separation(const Chains& c, const Pair& p, glm::dvec3& push, double& s, double& t) const;
+  bool crossing(const Chains& c, const Pair& p, double& s, double& t) const;
+  std::int8_t neighbours_side(const Pair& p) const;  // the side of a listed pair a segment away, or 0
+  std::int8_t side_of(const Chains& c, const Pair& p) const;
+  glm::dvec3 shift(const Pair& p) const { return {p.sx * period_.x, p.sy * period_.y, 0.0}; }
+  double gap(const Chains& c, const Pair& p) const;
+
+  glm::dvec2 period_;
+  double margin_;
+  bool round_;
+  int threads_;
+  int builds_ = 0;
+  std::vector<Pair> pairs_;                        // strip by strip, then the ones across
+  std::vector<std::size_t> strip_first_;           // pairs_[strip_first_[k] .. strip_first_[k + 1]) in strip k
+  std::size_t across_first_ = 0;                   // pairs_[across_first_ ..) join distant strips: worked alone
+  std::vector<glm::dvec3> built_at_;
+  std::vector<std::uint32_t> by_segments_;  // pairs_ indices in (a, b, image) order
+};
+
+// The closest points of segments p0p1 and q0q1: parameters s, t in [0, 1] (Ericson,
+// Real-Time Collision Detection, 5.1.9).
+void closest_points(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0, const glm::dvec3& q1, double& s,
+                    double& t);
+
+}  // namespace knitc::relax

@@ -1,0 +1,195 @@
+#include "relax/relax.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "relax/chains.hpp"
+#include "relax/contacts.hpp"
+
+namespace knitc::relax {
+
+namespace {
+
+// The yarn's own terms, each a sweep along the chains.
+
+// Every segment back to its length: a sweep up the chains, then one down, so a
+// correction travels the whole yarn in one call rather than a segment per call.
+void keep_lengths(Chains& c) {
+  auto keep = [&](std::size_t i) {
+    if (!c.segment[i]) return;
+    const double wa = c.inv_mass[i], wb = c.inv_mass[i + 1];
+    if (wa + wb <= 0.0) return;
+    glm::dvec3 d = c.pos[i + 1] - c.pos[i];
+    const double length = glm::length(d);
+    if (length < 1e-12) return;
+    d *= (length - c.rest_length[i]) / (length * (wa + wb));
+    c.pos[i] += wa * d;
+    c.pos[i + 1] -= wb * d;
+  };
+  for (std::size_t i = 0; i + 1 < c.pos.size(); ++i) keep(i);
+  for (std::size_t i = c.pos.size(); i-- > 1;) keep(i - 1);
+}
+
+// Bending: each point's displacement from the layout a step (`rate`, in (0, 1]) toward
+// the mean of its neighbours' along the yarn. A push at a contact spreads over a few
+// diameters of yarn instead of kinking it, and the loop keeps the shape it was laid out in.
+void smooth(Chains& c, double rate) {
+  for (std::size_t piece = 0; piece + 1 < c.first.size(); ++piece) {
+    const std::size_t from = c.first[piece], to = c.first[piece + 1];
+    if (to - from < 3) continue;
+    glm::dvec3 before = c.pos[from] - c.rest[from];
+    for (std::size_t i = from + 1; i + 1 < to; ++i) {
+      const glm::dvec3 here = c.pos[i] - c.rest[i];
+      const glm::dvec3 after = c.pos[i + 1] - c.rest[i + 1];
+      c.pos[i] += rate * c.inv_mass[i] * (0.5 * (before + after) - here);
+      before = here;
+    }
+  }
+}
+
+// No bend tighter than `radii` tube radii: where the circle through a point and its two
+// neighbours is smaller, the point moves toward their chord and the neighbours away,
+// keeping the three points' centroid.
+void limit_bends(Chains& c, double radii) {
+  for (std::size_t piece = 0; piece + 1 < c.first.size(); ++piece) {
+    const std::size_t from = c.first[piece], to = c.first[piece + 1];
+    for (std::size_t i = from + 1; i + 1 < to; ++i) {
+      const glm::dvec3 mid = 0.5 * (c.pos[i - 1] + c.pos[i + 1]);
+      const double half_chord = 0.5 * glm::distance(c.pos[i - 1], c.pos[i + 1]);
+      const double rise = glm::distance(c.pos[i], mid);
+      const double radius = radii * c.radius[i];
+      // The circle through the three points has radius (half_chord^2 + rise^2) / (2 rise).
+      if (rise <= 1e-12 || half_chord * half_chord + rise * rise <= 2.0 * rise * radius) continue;
+      const double allowed = half_chord < radius ? radius - std::sqrt(radius * radius - half_chord * half_chord) : radius;
+      const glm::dvec3 move = (mid - c.pos[i]) * ((rise - std::min(allowed, rise)) / rise);
+      const double wi = c.inv_mass[i], wa = c.inv_mass[i - 1], wb = c.inv_mass[i + 1];
+      const double sum = wi + 0.25 * (wa + wb);
+      if (sum <= 0.0) continue;
+      c.pos[i] += (wi / sum) * move;
+      c.pos[i - 1] -= (0.5 * wa / sum) * move;
+      c.pos[i + 1] -= (0.5 * wb / sum) * move;
+    }
+  }
+}
+
+// The sweeps move the fabric as a whole only slowly: a swatch that must draw in by a
+// few percent to find the length its yarn needs around the contacts does so from its
+// edges inward, over as many sweeps as it has courses. So the part of a sweep's motion
+// that changes the swatch's width (flat: x about the centre; round: the tube's radius)
+// or height (y) is fitted by least squares and carried further, `boost` times (per
+// axis) more, as a two-level solver corrects its coarsest modes. At the fixed point the
+// sweeps move nothing, and neither does this: the answer is the sweeps' own.
+struct Size {
+  bool round = false;
+  bool free_width = true, free_height = true;
+  glm::dvec2 boost{0.0};
+};
+
+void boost_size(Chains& c, const std::vector<glm::dvec3>& before, const Size& size, Contacts& contacts) {
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const auto& p : c.pos) {
+    lo = glm::min(lo, glm::dvec2(p));
+    hi = glm::max(hi, glm::dvec2(p));
+  }
+  const glm::dvec2 centre = 0.5 * (lo + hi);
+  auto across = [&](const glm::dvec3& p) { return size.round ? glm::dvec2(p.x, p.z) : glm::dvec2(p.x - centre.x, 0.0); };
+  double wn = 0.0, wd = 0.0, hn = 0.0, hd = 0.0;
+  for (std::size_t i = 0; i < c.pos.size(); ++i) {
+    if (c.inv_mass[i] == 0.0) continue;
+    const glm::dvec2 w = across(before[i]), moved = across(c.pos[i]) - w;
+    wn += glm::dot(moved, w);
+    wd += glm::dot(w, w);
+    const double h = before[i].y - centre.y;
+    hn += (c.pos[i].y - before[i].y) * h;
+    hd += h * h;
+  }
+  const double grow_w = size.free_width && wd > 0.0 ? std::clamp(size.boost.x * wn / wd, -0.01, 0.01) : 0.0;
+  const double grow_h = size.free_height && hd > 0.0 ? std::clamp(size.boost.y * hn / hd, -0.01, 0.01) : 0.0;
+  if (grow_w == 0.0 && grow_h == 0.0) return;
+  auto move = [&](glm::dvec3& p) {
+    if (size.round) {
+      p.x *= 1.0 + grow_w;
+      p.z *= 1.0 + grow_w;
+    } else {
+      p.x += grow_w * (p.x - centre.x);
+    }
+    p.y += grow_h * (p.y - centre.y);
+  };
+  for (std::size_t i = 0; i < c.pos.size(); ++i)
+    if (c.inv_mass[i] != 0.0) move(c.pos[i]);
+  contacts.moved(move, glm::dvec2(1.0 + grow_w, 1.0 + grow_h));
+}
+
+double polyline_length(const std::vector<glm::dvec3>& p, std::size_t from, std::size_t to) {
+  double length = 0.0;
+  for (std::size_t i = from + 1; i < to; ++i) length += glm::distance(p[i - 1], p[i]);
+  return length;
+}
+
+}  // namespace
+
+Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<double>& diameter,
+              const Options& options) {
+  Relaxed out;
+  Chains c = chains_of(layout, pieces, diameter, options.boundary);
+  const double d = c.thickest;
+  if (d <= 0.0 || c.pos.empty()) {
+    out.pieces = std::move(pieces);
+    return out;
+  }
+  glm::dvec2 period(0.0);
+  if (options.boundary == Boundary::periodic) {
+    if (layout.knitting == Knitting::flat) period.x = layout.wales * layout.loop_width;
+    // Not in y: the courses draw in as the yarns part, which a fixed repeat forbids and
+    // nothing yet finds for an endless fabric (see docs/relaxation.md).
+  }
+  Contacts contacts(period, contact_margin * d, layout.knitting == Knitting::round, options.threads);
+  Size size;
+  size.round = layout.knitting == Knitting::round;
+  size.free_width = size.free_height = options.boundary != Boundary::held;
+  // About the number of loops between the swatch's middle and its edges, times a gain.
+  size.boost = size_gain * glm::dvec2(layout.wales, layout.courses);
+
+  contacts.find(c);
+  out.stats.start_overlap = contacts.deepest(c) / d;
+  const double tolerance = options.tolerance * d;
+  std::vector<glm::dvec3> before;
+  int iteration = 0;
+  for (; iteration < options.max_iterations; ++iteration) {
+    if (contacts.stale(c)) contacts.find(c);
+    before = c.pos;
+    const double met = contacts.push_apart(c, contact_skin).deepest;
+    // Done when nothing overlaps: the list holds every pair that could, until it is stale.
+    if (met <= tolerance && iteration > 0) {
+      if (contacts.stale(c)) contacts.find(c);
+      if (contacts.deepest(c) <= tolerance) break;
+    }
+    keep_lengths(c);
+    smooth(c, bending_rate);
+    limit_bends(c, tightest_bend_radii);
+    keep_lengths(c);
+    boost_size(c, before, size, contacts);
+  }
+  if (contacts.stale(c)) contacts.find(c);
+  out.stats.iterations = iteration;
+  out.stats.period = contacts.period();
+  out.stats.end_overlap = contacts.deepest(c) / d;
+  for (const auto& w : contacts.worst(c, 8)) out.stats.worst.push_back({w.gap / d, c.pos[w.a], c.pos[w.b]});
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const std::size_t from = c.first[i], to = c.first[i + 1];
+    double before_length = 0.0;
+    for (std::size_t k = from; k + 1 < to; ++k) before_length += c.rest_length[k];
+    const double after = polyline_length(c.pos, from, to);
+    if (before_length > 0.0) out.stats.length_change = std::max(out.stats.length_change, std::abs(after / before_length - 1.0));
+    std::copy(c.pos.begin() + static_cast<std::ptrdiff_t>(from), c.pos.begin() + static_cast<std::ptrdiff_t>(to),
+              pieces[i].data_points.begin());
+  }
+  out.pieces = std::move(pieces);
+  return out;
+}
+
+}  // namespace knitc::relax

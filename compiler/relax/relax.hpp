@@ -1,0 +1,79 @@
+// Relaxation: moves the laid-out yarns apart until no two pieces of yarn overlap, each
+// yarn keeping its length, its smoothness and the side it passes every other yarn on.
+//
+// The yarns are chains of centreline points (the layout's curves, refined so that
+// consecutive points are at most half a diameter apart) and the chains' segments are
+// capsules of the yarn's radius. Position-based dynamics (Muller et al. 2007), in a
+// fixed order so the result is the same on any machine and for any thread count:
+//   - contact: two segments of different pieces, or of one piece more than two
+//     diameters apart along it, end at least r_a + r_b apart (plus a 2% skin, so the
+//     smooth curve through the chain clears too);
+//   - length: every segment keeps its length;
+//   - bending: the displacement from the layout is smoothed along the yarn, so a push at
+//     a contact bends the yarn over a few diameters instead of kinking it.
+// The contacts are found with a grid of cells about two diameters wide, rebuilt when some
+// point has moved a quarter diameter: time and memory grow linearly with the fabric.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "layout/layout.hpp"
+#include "yarn_paths/yarn_paths.hpp"
+
+namespace knitc::relax {
+
+enum class Boundary {
+  free,      // a swatch: every edge free to move
+  held,      // the cast-on and the last course held where the layout put them
+  periodic,  // one repeat of a fabric endless across: contacts wrap from one selvedge to
+             // the other (flat work), one loop width per wale; the turns and tails at the
+             // selvedges take no part. Not yet periodic in y (the courses must draw in).
+};
+
+struct Options {
+  Boundary boundary = Boundary::free;
+  double spacing = 0.7;     // chain points about this many diameters apart (see refine)
+  double tolerance = 0.01;  // done when no two capsules overlap by more than this fraction of d
+  int max_iterations = 400;
+  int threads = 0;          // 0: every core; the result is the same for any count
+};
+
+// The constants of the method, in diameters or tube radii.
+inline constexpr double contact_skin = 0.04;        // capsules are pushed to (1 + skin) (r_a + r_b) apart
+inline constexpr double contact_margin = 0.5;         // contact pairs are listed up to this many d apart
+inline constexpr double bending_rate = 0.1;        // the smoothing step's rate
+inline constexpr double tightest_bend_radii = 1.2;
+inline constexpr double size_gain = 64.0;            // the size boost per loop across (see relax.cpp)  // no chain bends tighter than this many tube radii
+
+struct Stats {
+  int iterations = 0;
+  double start_overlap = 0.0;  // deepest capsule overlap before, as a fraction of the thickest d
+  double end_overlap = 0.0;    // and after
+  double length_change = 0.0;  // the largest relative change of a piece's length, >= 0
+  glm::dvec2 period{0.0};      // mm, a periodic swatch's repeat at the end (0: not periodic that way)
+  struct Overlap {
+    double depth;        // fraction of d, negative: a gap
+    glm::dvec3 a, b;     // mm, the first points of the two segments
+  };
+  std::vector<Overlap> worst;  // the deepest remaining overlaps, deepest first (at most 8)
+};
+
+struct Relaxed {
+  std::vector<yarn_paths::Piece> pieces;
+  Stats stats;
+};
+
+// The pieces with points inserted on each piece's interpolating curve (chord-length
+// parametrisation) so that no two consecutive points are more than spacing x d apart;
+// the old points are kept and loop_first follows them. diameter: mm, per Pattern::yarns.
+std::vector<yarn_paths::Piece> refine(std::vector<yarn_paths::Piece> pieces, const std::vector<double>& diameter,
+                                      double spacing);
+
+// Relaxes refined chains (see refine) laid out by `layout`; the result has the same points,
+// moved. diameter: mm, per Pattern::yarns.
+Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> chains, const std::vector<double>& diameter,
+              const Options& options);
+
+}  // namespace knitc::relax

@@ -1,0 +1,239 @@
+// The contact relaxation (issue 7): on the fabrics it must hold for, no two yarn tubes
+// overlap by more than 5% of a diameter, no crossing changes sides, no yarn changes
+// length by more than 2%; and the result is the same for any thread count. Plus the
+// pieces it is made of: capsule distances, the knot-diagram comparison, the boundaries.
+#include <algorithm>
+#include <cmath>
+#include <regex>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "measure/crossings.hpp"
+#include "measure/measure.hpp"
+#include "relax/contacts.hpp"
+#include "relax/relax.hpp"
+#include "support.hpp"
+
+namespace knitc {
+namespace {
+
+// A library pattern knitted at the seed paper's proportions, loop width 4, loop height
+// 4.2, thickness 2 mm, in yarn 1 mm thick: a loop some 16 diameters long, which round
+// yarn that does not squash can take. (The library's own gauges with yarns given by
+// weight are tighter, about 10 to 12 diameters a loop: see docs/geometry.md.)
+Pattern at_paper_gauge(const std::string& name) {
+  const std::string path = std::string(KNITC_SOURCE_DIR) + "/patterns/" + name + ".lua";
+  std::string source = test::read_text(path);
+  source = std::regex_replace(source, std::regex(R"(gauge = \{[^}]*\})"), "gauge = { loop_width = 4.0, loop_height = 4.2, thickness = 2.0 }");
+  source = std::regex_replace(source, std::regex(R"(weight = "[^"]*")"), "diameter = 1.0");
+  return runtime::run_pattern(source, path).pattern;
+}
+
+std::vector<double> diameters(const Pattern& p) {
+  std::vector<double> d;
+  for (const Yarn& y : p.yarns) d.push_back(y.diameter);
+  return d;
+}
+
+// Centrelines only: the relaxation's figures without the cost of the tubes.
+CompileOptions centrelines(bool relax) {
+  CompileOptions o;
+  o.view = View::centreline;
+  o.chord_tolerance = 0.05;
+  o.relax = relax;
+  return o;
+}
+
+class Relaxed : public testing::TestWithParam<std::string> {};
+
+TEST_P(Relaxed, ClearsEveryContactKeepingLengthsAndCrossings) {
+  const Pattern pattern = at_paper_gauge(GetParam());
+  const Fabric before = compile(pattern, centrelines(false));
+  const Fabric after = compile(pattern, centrelines(true));
+  ASSERT_TRUE(after.relaxed);
+  EXPECT_LT(after.relaxation.iterations, relax::Options{}.max_iterations) << "did not converge";
+  const auto m0 = measure::measure(pattern, before), m1 = measure::measure(pattern, after);
+  EXPECT_GT(m0.deepest_penetration, 0.5);  // the layout's overlap, for scale
+  EXPECT_LE(m1.deepest_penetration, 0.05);
+  for (std::size_t y = 0; y < pattern.yarns.size(); ++y) {
+    if (m0.yarn_length[y] == 0.0) continue;
+    EXPECT_NEAR(m1.yarn_length[y] / m0.yarn_length[y], 1.0, 0.02) << "yarn " << pattern.yarns[y].id;
+  }
+  EXPECT_LE(after.relaxation.length_change, 0.02);
+
+  // The knot diagram: the relaxed chains' points are the refined layout's, moved.
+  std::vector<yarn_paths::Piece> relaxed;
+  for (const CurvePiece& p : after.pieces) relaxed.push_back(p.path);
+  const auto laid = relax::refine(yarn_paths::trace(before.layout, yarn_paths::LoopModel::smooth), diameters(pattern),
+                                  relax::Options{}.spacing);
+  ASSERT_EQ(laid.size(), relaxed.size());
+  for (std::size_t i = 0; i < laid.size(); ++i) ASSERT_EQ(laid[i].data_points.size(), relaxed[i].data_points.size());
+  const auto x0 = measure::crossings(laid), x1 = measure::crossings(relaxed);
+  const auto changes = measure::compare(x0, x1, 6);
+  EXPECT_GT(x0.size(), 3 * before.layout.loops.size());  // every loop crosses others several times
+  EXPECT_EQ(changes.flipped, 0u);
+  // Crossings may vanish or appear, but two at a time (the same yarn in front at both),
+  // as two yarns slide apart or together without passing through each other.
+  EXPECT_EQ(changes.lost_alone, 0u);
+  EXPECT_EQ(changes.found_alone, 0u);
+  RecordProperty("crossings", static_cast<int>(x0.size()));
+  RecordProperty("lost", static_cast<int>(changes.lost));
+  RecordProperty("new", static_cast<int>(changes.found));
+}
+
+// The library's stockinette, garter, 1x1 rib and seed fabrics.
+INSTANTIATE_TEST_SUITE_P(Fabrics, Relaxed, testing::Values("jersey", "garter", "rib_1x1", "seed"));
+// Not yet (issue 7 stays open; docs/relaxation.md): the tuck fabric keeps all but one
+// crossing a tuck, where the layout wraps two yarns round each other closer than a yarn
+// is thick; the stranded fabric loses crossings where the layout clasps its two yarns at
+// a colour change; the cable does not settle. Run them with
+// --gtest_also_run_disabled_tests.
+INSTANTIATE_TEST_SUITE_P(DISABLED_NotYet, Relaxed, testing::Values("half_cardigan", "cable_2x2", "stranded"));
+
+TEST(Relax, SameForAnyThreadCount) {
+  const Pattern pattern = at_paper_gauge("rib_1x1");
+  CompileOptions one = centrelines(true), two = centrelines(true);
+  one.threads = 1;
+  two.threads = 3;
+  const Fabric a = compile(pattern, one), b = compile(pattern, two);
+  ASSERT_EQ(a.pieces.size(), b.pieces.size());
+  for (std::size_t i = 0; i < a.pieces.size(); ++i) EXPECT_EQ(a.pieces[i].path.data_points, b.pieces[i].path.data_points);
+  EXPECT_EQ(a.relaxation.iterations, b.relaxation.iterations);
+}
+
+// A jersey swatch laid out, its chains, and those chains relaxed within `boundary`.
+struct Swatch {
+  layout::Layout layout;
+  std::vector<yarn_paths::Piece> chains;
+  relax::Relaxed out;
+};
+Swatch relaxed_jersey(int stitches, int rows, relax::Boundary boundary) {
+  const Pattern pattern = test::jersey(stitches, rows);
+  Swatch s;
+  s.layout = layout::lay_out(pattern);
+  s.chains = relax::refine(yarn_paths::trace(s.layout, yarn_paths::LoopModel::smooth), diameters(pattern), 0.5);
+  relax::Options o;
+  o.boundary = boundary;
+  s.out = relax::relax(s.layout, s.chains, diameters(pattern), o);
+  return s;
+}
+
+TEST(Relax, HeldEdgesStayPut) {
+  const auto [layout, chains, out] = relaxed_jersey(8, 6, relax::Boundary::held);
+  std::size_t held = 0, moved = 0;
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    const auto& piece = chains[i];
+    for (std::size_t j = 0; j < piece.loops.size(); ++j) {
+      const int course = layout.loops[static_cast<std::size_t>(piece.loops[j])].course;
+      for (std::size_t k = piece.loop_first[j]; k <= piece.loop_last[j]; ++k) {
+        const bool edge = course == 0 || course == layout.courses - 1;
+        const bool same = out.pieces[i].data_points[k] == piece.data_points[k];
+        if (edge) {
+          EXPECT_TRUE(same) << "course " << course;
+          held += same ? 1 : 0;
+        } else {
+          moved += same ? 0 : 1;
+        }
+      }
+    }
+  }
+  EXPECT_GT(held, 0u);
+  EXPECT_GT(moved, 0u);
+  EXPECT_LE(out.stats.end_overlap, 0.02);
+}
+
+TEST(Relax, PeriodicSwatchClearsContactsAcrossItsEdges) {
+  const auto [layout, chains, out] = relaxed_jersey(8, 8, relax::Boundary::periodic);
+  EXPECT_GT(out.stats.start_overlap, 0.5);
+  EXPECT_LE(out.stats.end_overlap, 0.01 + 1e-9);
+  EXPECT_LT(out.stats.iterations, relax::Options{}.max_iterations);
+  EXPECT_LE(out.stats.length_change, 0.02);
+  // The first wale's loops met the last wale's images, and were pushed like a middle one:
+  // the same shape, one swatch width apart.
+  const auto& piece = out.pieces[0];
+  auto centre = [&](std::size_t j) {
+    glm::dvec3 sum(0.0);
+    for (std::size_t k = piece.loop_first[j]; k <= piece.loop_last[j]; ++k) sum += piece.data_points[k];
+    return sum / static_cast<double>(piece.loop_last[j] - piece.loop_first[j] + 1);
+  };
+  // Course 4 (pattern row 4, worked right to left): loops j = 8 * 4 + 0 .. 7 of the piece.
+  const glm::dvec3 first = centre(8 * 4), last = centre(8 * 4 + 7), middle = centre(8 * 4 + 3), next = centre(8 * 4 + 4);
+  EXPECT_NEAR(first.z - middle.z, 0.0, 0.05) << "an edge loop sits as deep as a middle one";
+  EXPECT_NEAR(last.z - next.z, 0.0, 0.05);
+  // Across the repeat's edge the loops are as far apart as in the middle.
+  ASSERT_GT(out.stats.period.x, 0.0);
+  EXPECT_NEAR(std::abs(first.x + out.stats.period.x - last.x), std::abs(next.x - middle.x), 0.05 * std::abs(next.x - middle.x));
+}
+
+TEST(Relax, OffLeavesTheLayoutAsItIs) {
+  const Pattern pattern = test::jersey(6, 4);
+  const Fabric off = compile(pattern, centrelines(false));
+  EXPECT_FALSE(off.relaxed);
+  const auto traced = yarn_paths::trace(off.layout, yarn_paths::LoopModel::smooth);
+  ASSERT_EQ(traced.size(), off.pieces.size());
+  EXPECT_EQ(traced[0].data_points, off.pieces[0].path.data_points);
+}
+
+TEST(Relax, RefineKeepsEveryPointAndLoop) {
+  const Pattern pattern = test::jersey(4, 3);
+  const auto layout = layout::lay_out(pattern);
+  const auto traced = yarn_paths::trace(layout, yarn_paths::LoopModel::smooth);
+  const auto refined = relax::refine(traced, {1.0}, 0.5);
+  ASSERT_EQ(refined.size(), traced.size());
+  const auto& a = traced[0];
+  const auto& b = refined[0];
+  EXPECT_GT(b.data_points.size(), 2 * a.data_points.size());
+  for (std::size_t j = 0; j < a.loops.size(); ++j) {
+    EXPECT_EQ(b.data_points[b.loop_first[j]], a.data_points[a.loop_first[j]]);
+    EXPECT_EQ(b.data_points[b.loop_last[j]], a.data_points[a.loop_last[j]]);
+  }
+    // The chords between data points are cut into pieces of at most 0.5: on the curve, a
+  // little more where it bends.
+  for (std::size_t k = 1; k < b.data_points.size(); ++k) EXPECT_LE(glm::distance(b.data_points[k - 1], b.data_points[k]), 0.75);
+}
+
+TEST(Relax, ClosestPointsOfSegments) {
+  double s, t;
+  relax::closest_points({0, 0, 0}, {2, 0, 0}, {1, -1, 1}, {1, 1, 1}, s, t);  // crossing, 1 apart
+  EXPECT_DOUBLE_EQ(s, 0.5);
+  EXPECT_DOUBLE_EQ(t, 0.5);
+  relax::closest_points({0, 0, 0}, {1, 0, 0}, {3, 0, 0}, {4, 0, 0}, s, t);  // in line, end to end
+  EXPECT_DOUBLE_EQ(s, 1.0);
+  EXPECT_DOUBLE_EQ(t, 0.0);
+  relax::closest_points({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, s, t);  // parallel
+  EXPECT_NEAR(glm::distance(glm::dvec3(s, 0, 0), glm::dvec3(t, 1, 0)), 1.0, 1e-12);
+}
+
+TEST(LoopShape, OfTheLayoutIsItsGauge) {
+  const Pattern pattern = test::jersey(12, 10);  // W 4, H 4.2: C = 0.86 H
+  const Fabric fabric = compile(pattern, centrelines(false));
+  const auto shape = measure::loop_shape(fabric);
+  EXPECT_EQ(shape.loops, 7u * 8u);  // courses 2..8 of the cast-on and 10 rows, needle positions 2..9
+  EXPECT_NEAR(shape.wale_spacing, 4.0, 0.04);
+  EXPECT_NEAR(shape.course_spacing, 0.86 * 4.2, 0.04);
+  EXPECT_NEAR(shape.kw, shape.loop_length / 4.0, 0.05);
+  EXPECT_GT(shape.loop_length, 3.0 * 4.0);  // a loop is some three loop widths of yarn, and more
+  EXPECT_LT(shape.loop_length, 5.0 * 4.0);
+}
+
+TEST(Crossings, CountsOverAndUnderAndSeesAFlip) {
+  yarn_paths::Piece across, up;
+  across.data_points = {{-1, 0, 0}, {1, 0, 0}};
+  up.data_points = {{0, -1, 0.5}, {0, 1, 0.5}};
+  const auto x = measure::crossings({across, up});
+  ASSERT_EQ(x.size(), 1u);
+  EXPECT_EQ(x[0].piece_a, 0u);
+  EXPECT_DOUBLE_EQ(x[0].depth, -0.5);  // the second piece is in front
+  up.data_points = {{0, -1, -0.5}, {0, 1, -0.5}};
+  const auto y = measure::crossings({across, up});
+  const auto c = measure::compare(x, y, 2);
+  EXPECT_EQ(c.flipped, 1u);
+  EXPECT_EQ(c.kept, 0u);
+  up.data_points = {{3, -1, 0.5}, {3, 1, 0.5}};  // moved aside: the crossing is gone
+  const auto lost = measure::compare(x, measure::crossings({across, up}), 2);
+  EXPECT_EQ(lost.lost, 1u);
+}
+
+}  // namespace
+}  // namespace knitc
