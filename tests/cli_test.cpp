@@ -161,6 +161,7 @@ TEST(Cli, CommandLineMisuseExitsTwo) {
        {std::string(""), std::string("build"), std::string("build patterns/jersey.lua"), std::string("frobnicate"),
         "build patterns/jersey.lua" + out + " --view hologram", "build patterns/jersey.lua" + out + " --sides 2",
         "build patterns/jersey.lua" + out + " --tolerance 0", "build patterns/jersey.lua" + out + " --loop-model lumpy",
+        "build patterns/jersey.lua" + out + " --relax maybe", "build patterns/jersey.lua" + out + " --edges sticky",
         "build no/such/pattern.lua" + out, "build patterns/jersey.lua -o " + quoted(dir / "no/such/dir/x.glb"),
         "build patterns/jersey.lua" + out + " --centreline " + quoted(dir / "x.glb"),
         std::string("build patterns/jersey.lua -o patterns/jersey.lua"),
@@ -171,6 +172,23 @@ TEST(Cli, CommandLineMisuseExitsTwo) {
   }
   EXPECT_FALSE(fs::exists(dir / "x.glb"));
   fs::remove_all(dir);
+}
+
+TEST(Cli, RelaxOnClearsTheOverlapAndSaysSo) {
+  const auto off = test::run_knitc("snapshot patterns/jersey.lua");
+  const auto on = test::run_knitc("snapshot patterns/jersey.lua --relax on");
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  ASSERT_EQ(on.exit_code, 0) << on.err;
+  EXPECT_NE(off.out.find("relaxation  off"), std::string::npos);
+  EXPECT_NE(on.out.find(" iterations, overlap 0.901 -> 0.00"), std::string::npos) << on.out;
+  EXPECT_NE(off.out.find("penetration 0.853 d"), std::string::npos) << off.out;
+  EXPECT_EQ(on.out.find("penetration 0.8"), std::string::npos) << on.out;
+  const auto stats = test::run_knitc("build patterns/jersey.lua -o " + quoted(test::scratch_dir("relax") / "j.glb") +
+                                     " --relax on --edges held --stats");
+  ASSERT_EQ(stats.exit_code, 0) << stats.err;
+  EXPECT_NE(stats.err.find("relaxation  "), std::string::npos);
+  EXPECT_NE(stats.err.find(" s; capsule overlap"), std::string::npos) << stats.err;  // the time, in --stats only
+  EXPECT_NE(stats.err.find("loop shape  l "), std::string::npos);
 }
 
 TEST(Cli, RendersAPreviewPng) {
