@@ -22,6 +22,7 @@ class Contacts {
  public:
   // period: the swatch's repeat in x and y, mm (0: not periodic that way). margin, mm.
   // round: the fabric is a tube (work in the round), whose crossings are not kept by side.
+  // threads: how many to use, >= 1.
   Contacts(glm::dvec2 period, double margin, bool round, int threads)
       : period_(period), margin_(margin), round_(round), threads_(threads) {}
 

@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 
 #include "relax/chains.hpp"
+#include "parallel.hpp"
 #include "relax/contacts.hpp"
 
 namespace knitc::relax {
@@ -147,7 +148,7 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
     // Not in y: the courses draw in as the yarns part, which a fixed repeat forbids and
     // nothing yet finds for an endless fabric (see docs/relaxation.md).
   }
-  Contacts contacts(period, contact_margin * d, layout.knitting == Knitting::round, options.threads);
+  Contacts contacts(period, contact_margin * d, layout.knitting == Knitting::round, thread_count(options.threads));
   Size size;
   size.round = layout.knitting == Knitting::round;
   size.free_width = size.free_height = options.boundary != Boundary::held;

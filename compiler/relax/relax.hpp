@@ -1,18 +1,23 @@
 // Relaxation: moves the laid-out yarns apart until no two pieces of yarn overlap, each
 // yarn keeping its length, its smoothness and the side it passes every other yarn on.
+// docs/relaxation.md tells what it achieves and what not yet.
 //
 // The yarns are chains of centreline points (the layout's curves, refined so that
-// consecutive points are at most half a diameter apart) and the chains' segments are
+// consecutive points are about 0.7 diameters apart) and the chains' segments are
 // capsules of the yarn's radius. Position-based dynamics (Muller et al. 2007), in a
 // fixed order so the result is the same on any machine and for any thread count:
 //   - contact: two segments of different pieces, or of one piece more than two
-//     diameters apart along it, end at least r_a + r_b apart (plus a 2% skin, so the
-//     smooth curve through the chain clears too);
+//     diameters apart along it, end at least r_a + r_b apart (plus a 4% skin, so the
+//     smooth curve through the chain clears too); where two cross seen from the face,
+//     the one in front stays in front (flat work);
 //   - length: every segment keeps its length;
 //   - bending: the displacement from the layout is smoothed along the yarn, so a push at
-//     a contact bends the yarn over a few diameters instead of kinking it.
+//     a contact bends the yarn over a few diameters instead of kinking it; no bend
+//     tighter than 1.2 tube radii;
+//   - size: the swatch's change of width and height, sped up (see relax.cpp).
 // The contacts are found with a grid of cells about two diameters wide, rebuilt when some
-// point has moved a quarter diameter: time and memory grow linearly with the fabric.
+// point has moved a quarter diameter: each sweep's time and memory grow linearly with the
+// fabric (the number of sweeps does not yet: docs/relaxation.md).
 #pragma once
 
 #include <vector>
@@ -35,7 +40,7 @@ enum class Boundary {
 struct Options {
   Boundary boundary = Boundary::free;
   double spacing = 0.7;     // chain points about this many diameters apart (see refine)
-  double tolerance = 0.01;  // done when no two capsules overlap by more than this fraction of d
+  double tolerance = 0.02;  // done when no two capsules overlap by more than this fraction of d
   int max_iterations = 400;
   int threads = 0;          // 0: every core; the result is the same for any count
 };
