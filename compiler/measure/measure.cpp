@@ -140,12 +140,12 @@ LoopShape loop_shape(const Fabric& fabric) {
   std::vector<std::size_t> course_first(static_cast<std::size_t>(layout.courses) + 1, layout.loops.size());
   for (std::size_t i = layout.loops.size(); i-- > 0;) course_first[static_cast<std::size_t>(layout.loops[i].course)] = i;
   for (std::size_t c = course_first.size() - 1; c-- > 0;) course_first[c] = std::min(course_first[c], course_first[c + 1]);
-  auto at = [&](int course, int wale) -> long {
+  auto at = [&](int course, int wale) -> long {  // a course's loops are left to right
     if (course < 0 || course >= layout.courses) return -1;
-    for (std::size_t i = course_first[static_cast<std::size_t>(course)];
-         i < layout.loops.size() && layout.loops[i].course == course; ++i)
-      if (layout.loops[i].wale == wale) return static_cast<long>(i);
-    return -1;
+    const auto first = layout.loops.begin() + static_cast<std::ptrdiff_t>(course_first[static_cast<std::size_t>(course)]);
+    const auto last = layout.loops.begin() + static_cast<std::ptrdiff_t>(course_first[static_cast<std::size_t>(course) + 1]);
+    const auto it = std::lower_bound(first, last, wale, [](const layout::Loop& l, int w) { return l.wale < w; });
+    return it != last && it->wale == wale ? static_cast<long>(it - layout.loops.begin()) : -1;
   };
   LoopShape shape;
   double wales = 0.0, courses = 0.0;

@@ -80,7 +80,6 @@ Chains chains_of(const layout::Layout& layout, const std::vector<yarn_paths::Pie
     if (c.piece[i] != c.piece[i + 1]) continue;
     c.segment[i] = 1;
     c.rest_length[i] = glm::distance(c.pos[i], c.pos[i + 1]);
-    c.longest = std::max(c.longest, c.rest_length[i]);
     c.contactable[i] = boundary != Boundary::periodic || (on_loop[i] > 0 && on_loop[i + 1] > 0);
   }
   return c;

@@ -24,7 +24,6 @@ struct Chains {
   std::vector<double> rest_length;        // per segment, mm
   std::vector<std::size_t> first;         // per piece, its first point; then one past the end
   double thickest = 0.0;                  // mm, the largest diameter
-  double longest = 0.0;                   // mm, the longest segment in the layout
 };
 
 // The pieces' points as chains. Held boundaries give the cast-on's and the last course's

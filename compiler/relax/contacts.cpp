@@ -113,13 +113,11 @@ std::int8_t Contacts::neighbours_side(const Pair& p) const {
       if ((da == 0 && db == 0) || (da < 0 && p.a == 0) || (db < 0 && p.b == 0)) continue;
       const Pair key{static_cast<std::uint32_t>(static_cast<int>(p.a) + da), static_cast<std::uint32_t>(static_cast<int>(p.b) + db),
                      p.sx, p.sy, 0, 0, 0.0f};
-      const auto it = std::lower_bound(by_segments_.begin(), by_segments_.end(), key, [&](std::uint32_t x, const Pair& y) {
-        const Pair& q = pairs_[x];
-        return q.a != y.a ? q.a < y.a : q.b != y.b ? q.b < y.b : q.sx != y.sx ? q.sx < y.sx : q.sy < y.sy;
-      });
+      const auto it = std::lower_bound(by_segments_.begin(), by_segments_.end(), key,
+                                       [&](std::uint32_t x, const Pair& y) { return key_before(pairs_[x], y); });
       if (it == by_segments_.end()) continue;
       const Pair& q = pairs_[*it];
-      if (q.a == key.a && q.b == key.b && q.sx == key.sx && q.sy == key.sy && q.side != 0) return q.side;
+      if (!key_before(key, q) && q.side != 0) return q.side;
     }
   return 0;
 }
@@ -131,14 +129,10 @@ double Contacts::gap(const Chains& c, const Pair& p) const {
 }
 
 void Contacts::find(const Chains& c) {
-  ++builds_;
   built_at_ = c.pos;
   // The sides of the pairs listed so far, to look up by (a, b, image).
   std::vector<Pair> previous = std::move(pairs_);
-  auto pair_order = [](const Pair& x, const Pair& y) {
-    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.sx != y.sx ? x.sx < y.sx : x.sy < y.sy;
-  };
-  std::sort(previous.begin(), previous.end(), pair_order);
+  std::sort(previous.begin(), previous.end(), key_before);
   pairs_.clear();
   const std::size_t n = c.pos.size();
   double longest = 0.0;
@@ -228,8 +222,8 @@ void Contacts::find(const Chains& c) {
             const auto held = static_cast<std::uint8_t>((c.inv_mass[a] == 0.0 ? 1 : 0) | (c.inv_mass[a + 1] == 0.0 ? 2 : 0) |
                                                         (c.inv_mass[bs] == 0.0 ? 4 : 0) | (c.inv_mass[bs + 1] == 0.0 ? 8 : 0));
             Pair pair{static_cast<std::uint32_t>(a), b.segment, b.sx, b.sy, held, 0, static_cast<float>(c.radius[a] + c.radius[bs])};
-            const auto known = std::lower_bound(previous.begin(), previous.end(), pair, pair_order);
-            if (known != previous.end() && !pair_order(pair, *known) && known->side != 0)
+            const auto known = std::lower_bound(previous.begin(), previous.end(), pair, key_before);
+            if (known != previous.end() && !key_before(pair, *known) && known->side != 0)
               pair.side = known->side;
             else
               pair.side = side_of(c, pair);
@@ -267,7 +261,7 @@ void Contacts::find(const Chains& c) {
     for (const Pair& p : list) pairs_[next[strip_of_pair[i++]]++] = p;
   by_segments_.resize(pairs_.size());
   for (std::size_t k = 0; k < pairs_.size(); ++k) by_segments_[k] = static_cast<std::uint32_t>(k);
-  std::sort(by_segments_.begin(), by_segments_.end(), [&](std::uint32_t x, std::uint32_t y) { return pair_order(pairs_[x], pairs_[y]); });
+  std::sort(by_segments_.begin(), by_segments_.end(), [&](std::uint32_t x, std::uint32_t y) { return key_before(pairs_[x], pairs_[y]); });
 }
 
 bool Contacts::stale(const Chains& c) const {
@@ -279,8 +273,8 @@ bool Contacts::stale(const Chains& c) const {
   return false;
 }
 
-Contacts::Sweep Contacts::push_apart(Chains& c, double skin) {
-  auto push = [&](Pair& p, Sweep& sweep) {
+double Contacts::push_apart(Chains& c, double skin) {
+  auto push = [&](Pair& p, double& deepest) {
     const std::size_t a = p.a, b = p.b;
     const glm::dvec3 offset = shift(p);
     const double reach = p.reach;
@@ -300,7 +294,7 @@ Contacts::Sweep Contacts::push_apart(Chains& c, double skin) {
       if (before != 0) p.side = before;
     }
     const double target = reach * (1.0 + skin);
-    sweep.deepest = std::max(sweep.deepest, reach - dist);
+    deepest = std::max(deepest, reach - dist);
     if (dist >= target) return;
     const double w[4] = {p.held & 1 ? 0.0 : 1.0 - s, p.held & 2 ? 0.0 : s, p.held & 4 ? 0.0 : 1.0 - t, p.held & 8 ? 0.0 : t};
     const double sum = (1.0 - s) * w[0] + s * w[1] + (1.0 - t) * w[2] + t * w[3];
@@ -313,20 +307,20 @@ Contacts::Sweep Contacts::push_apart(Chains& c, double skin) {
     }
   };
   const std::size_t strips = strip_first_.size() - 1;
-  std::vector<Sweep> per_strip(strips);
+  std::vector<double> per_strip(strips, 0.0);
   for (std::size_t colour = 0; colour < 4; ++colour) {
     const std::size_t count = strips > colour ? (strips - colour + 3) / 4 : 0;
     parallel_for(count, threads_, [&](std::size_t j) {
       const std::size_t k = colour + 4 * j;
-      Sweep strip;  // a local: neighbouring strips' slots share a cache line
-      for (std::size_t i = strip_first_[k]; i < strip_first_[k + 1]; ++i) push(pairs_[i], strip);
-      per_strip[k] = strip;
+      double deepest = 0.0;  // a local: neighbouring strips' slots share a cache line
+      for (std::size_t i = strip_first_[k]; i < strip_first_[k + 1]; ++i) push(pairs_[i], deepest);
+      per_strip[k] = deepest;
     });
   }
-  Sweep all;
-  for (std::size_t i = across_first_; i < pairs_.size(); ++i) push(pairs_[i], all);
-  for (const Sweep& s : per_strip) all.deepest = std::max(all.deepest, s.deepest);
-  return all;
+  double deepest = 0.0;
+  for (std::size_t i = across_first_; i < pairs_.size(); ++i) push(pairs_[i], deepest);
+  for (double d : per_strip) deepest = std::max(deepest, d);
+  return deepest;
 }
 
 double Contacts::deepest(const Chains& c) const {
@@ -338,17 +332,6 @@ double Contacts::deepest(const Chains& c) const {
 void Contacts::moved(const std::function<void(glm::dvec3&)>& move, glm::dvec2 growth) {
   for (auto& p : built_at_) move(p);
   period_ *= growth;
-}
-
-std::vector<Contacts::Worst> Contacts::worst(const Chains& c, std::size_t count) const {
-  std::vector<Worst> all;
-  all.reserve(pairs_.size());
-  for (const Pair& p : pairs_) all.push_back({gap(c, p), p.a, p.b});
-  const std::size_t keep = std::min(count, all.size());
-  std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(keep), all.end(),
-                    [](const Worst& x, const Worst& y) { return x.gap != y.gap ? x.gap < y.gap : x.a < y.a; });
-  all.resize(keep);
-  return all;
 }
 
 }  // namespace knitc::relax

@@ -32,25 +32,15 @@ class Contacts {
   // Whether a point has moved half the margin since find(), so a pair may be missing.
   bool stale(const Chains& chains) const;
   // One sweep: every overlapping pair pushed to its radii plus `skin` (a fraction) apart.
-  struct Sweep {
-    double deepest = 0.0;  // mm, the deepest overlap met (before its push), 0 if none
-  };
-  Sweep push_apart(Chains& chains, double skin);
+  // Returns the deepest overlap met (before its push), mm, 0 if none.
+  double push_apart(Chains& chains, double skin);
   // The deepest overlap of the pairs, mm, without moving anything.
   double deepest(const Chains& chains) const;
   // The whole fabric was moved by `move` (a change of size): so are the positions the
   // list was built at, and the period grows by `growth` (1 + fraction, per axis).
   void moved(const std::function<void(glm::dvec3&)>& move, glm::dvec2 growth);
 
-  std::size_t size() const { return pairs_.size(); }
   glm::dvec2 period() const { return period_; }
-  int builds() const { return builds_; }
-
-  struct Worst {
-    double gap;  // mm, negative: overlap
-    std::uint32_t a, b;
-  };
-  std::vector<Worst> worst(const Chains& chains, std::size_t count) const;  // the deepest pairs first
 
  private:
   struct Pair {
@@ -63,6 +53,10 @@ class Contacts {
     std::int8_t side;
     float reach;           // mm, the sum of the two radii
   };
+  // Pairs in (a, b, image) order: how a pair is looked up.
+  static bool key_before(const Pair& x, const Pair& y) {
+    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.sx != y.sx ? x.sx < y.sx : x.sy < y.sy;
+  }
   // The distance between the pair's centrelines, mm, negative when a has passed to the
   // wrong side of b; and the way to push a (away from b).
   double separation(const Chains& c, const Pair& p, glm::dvec3& push, double& s, double& t) const;
@@ -76,7 +70,6 @@ class Contacts {
   double margin_;
   bool round_;
   int threads_;
-  int builds_ = 0;
   std::vector<Pair> pairs_;                        // strip by strip, then the ones across
   std::vector<std::size_t> strip_first_;           // pairs_[strip_first_[k] .. strip_first_[k + 1]) in strip k
   std::size_t across_first_ = 0;                   // pairs_[across_first_ ..) join distant strips: worked alone

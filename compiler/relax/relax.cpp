@@ -7,8 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
-#include "relax/chains.hpp"
 #include "parallel.hpp"
+#include "relax/chains.hpp"
 #include "relax/contacts.hpp"
 
 namespace knitc::relax {
@@ -163,7 +163,7 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
   for (; iteration < options.max_iterations; ++iteration) {
     if (contacts.stale(c)) contacts.find(c);
     before = c.pos;
-    const double met = contacts.push_apart(c, contact_skin).deepest;
+    const double met = contacts.push_apart(c, contact_skin);
     // Done when nothing overlaps: the list holds every pair that could, until it is stale.
     if (met <= tolerance && iteration > 0) {
       if (contacts.stale(c)) contacts.find(c);
@@ -179,7 +179,6 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
   out.stats.iterations = iteration;
   out.stats.period = contacts.period();
   out.stats.end_overlap = contacts.deepest(c) / d;
-  for (const auto& w : contacts.worst(c, 8)) out.stats.worst.push_back({w.gap / d, c.pos[w.a], c.pos[w.b]});
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const std::size_t from = c.first[i], to = c.first[i + 1];
     double before_length = 0.0;

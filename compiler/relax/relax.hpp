@@ -46,11 +46,11 @@ struct Options {
 };
 
 // The constants of the method, in diameters or tube radii.
-inline constexpr double contact_skin = 0.04;        // capsules are pushed to (1 + skin) (r_a + r_b) apart
-inline constexpr double contact_margin = 0.5;         // contact pairs are listed up to this many d apart
-inline constexpr double bending_rate = 0.1;        // the smoothing step's rate
-inline constexpr double tightest_bend_radii = 1.2;
-inline constexpr double size_gain = 64.0;            // the size boost per loop across (see relax.cpp)  // no chain bends tighter than this many tube radii
+inline constexpr double contact_skin = 0.04;         // capsules are pushed to (1 + skin) (r_a + r_b) apart
+inline constexpr double contact_margin = 0.5;        // contact pairs are listed up to this many d apart
+inline constexpr double bending_rate = 0.1;          // the smoothing step's rate
+inline constexpr double tightest_bend_radii = 1.2;   // no chain bends tighter than this many tube radii
+inline constexpr double size_gain = 64.0;            // the size boost per loop across (see relax.cpp)
 
 struct Stats {
   int iterations = 0;
@@ -58,11 +58,6 @@ struct Stats {
   double end_overlap = 0.0;    // and after
   double length_change = 0.0;  // the largest relative change of a piece's length, >= 0
   glm::dvec2 period{0.0};      // mm, a periodic swatch's repeat at the end (0: not periodic that way)
-  struct Overlap {
-    double depth;        // fraction of d, negative: a gap
-    glm::dvec3 a, b;     // mm, the first points of the two segments
-  };
-  std::vector<Overlap> worst;  // the deepest remaining overlaps, deepest first (at most 8)
 };
 
 struct Relaxed {
