@@ -24,6 +24,8 @@ struct Script {
   int cast_on_line = 0;
   int bind_off_line = 0;
   int live = 0;           // live stitches on the needle
+  std::vector<bool> purl_faced;  // per live stitch, face order: shows as a purl on the face
+  bool first_row_wrong_side = false;  // flat: row 1 is worked from the wrong side (knitspeak "Row 1 (WS)")
   int current_yarn = 0;
   long long loops = 0;
   language::Legend legend = language::default_legend();

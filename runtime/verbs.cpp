@@ -15,7 +15,24 @@ void need_pattern(lua_State* L, const char* verb) {
 // The next row's number and the side it is worked from.
 int next_row(const Script& s) { return static_cast<int>(s.pattern.courses.size()) + 1; }
 Side side_of(const Script& s, int row) {
-  return s.pattern.knitting == Knitting::flat && row % 2 == 0 ? Side::wrong : Side::right;
+  return s.pattern.knitting == Knitting::flat && (row + (s.first_row_wrong_side ? 1 : 0)) % 2 == 0 ? Side::wrong : Side::right;
+}
+
+// How each live stitch shows on the face after a course: what "knit the knit sts and
+// purl the purl sts" reads. A slipped or tucked stitch keeps the look of the one below.
+std::vector<bool> faces_after(const Course& c, const std::vector<bool>& below) {
+  std::vector<bool> out;
+  std::size_t at = 0;
+  for (const Op& op : c.ops) {
+    const StitchDef& st = stitch(op.stitch);
+    const bool purl = purled(st);
+    for (int k = 0; k < st.produces; ++k) {
+      const bool kept = st.family == StitchFamily::slip || st.family == StitchFamily::tuck;
+      out.push_back(kept && at + static_cast<std::size_t>(k) < below.size() ? below[at + static_cast<std::size_t>(k)] : purl);
+    }
+    at += static_cast<std::size_t>(st.consumes);
+  }
+  return out;
 }
 
 void need_live(lua_State* L, const Script& s) {
@@ -40,6 +57,7 @@ void add_course(lua_State* L, std::vector<Op> ops, const SourceLocation& where) 
   if (s.loops > max_loops)
     fail(L, "the fabric would have more than " + std::to_string(max_loops) + " loops; knit a smaller piece");
   s.live = live;
+  s.purl_faced = faces_after(c, s.purl_faced);
   s.pattern.courses.push_back(std::move(c));
 }
 
@@ -48,6 +66,15 @@ void work_written(lua_State* L, const language::RowText& text, const std::string
   Script& s = script_of(L);
   need_live(L, s);
   const int row = next_row(s);
+  if (text.as_they_appear) {  // face view directly: each stitch keeps the look it has
+    std::vector<Op> ops;
+    for (int i = 0; i < s.live; ++i) {
+      const bool purl = static_cast<std::size_t>(i) < s.purl_faced.size() && s.purl_faced[static_cast<std::size_t>(i)];
+      ops.push_back({stitch_id(purl ? "p" : "k"), s.current_yarn});
+    }
+    add_course(L, std::move(ops), line);
+    return;
+  }
   auto worked = language::work_row(text, source, s.live, row);
   if (auto* e = std::get_if<language::TextError>(&worked)) fail(L, e->message);
   auto ops = language::face_view(std::get<std::vector<language::Worked>>(worked), side_of(s, row), s.current_yarn);
@@ -70,6 +97,7 @@ int cast_on_verb(lua_State* L) {
   s.live = static_cast<int>(whole_number(L, 1, "cast_on's stitch count", 1, max_stitches));
   if (!lua_isnoneornil(L, 2)) s.current_yarn = yarn_index(L, luaL_checkstring(L, 2));
   s.pattern.cast_on = s.live;
+  s.purl_faced.assign(static_cast<std::size_t>(s.live), false);
   s.pattern.cast_on_yarn = s.current_yarn;
   s.cast_on_line = caller_line(L);
   return 0;

@@ -8,10 +8,32 @@ namespace knitc::knit_graph {
 namespace {
 
 // The new loops a cable makes take their parents from the block crossed: new position j
-// of a block of n with h held stitches comes from old position (j < h ? n - h + j : j - h).
+// of a block of n with h held stitches comes from old position (j < h ? n - h + j : j - h);
+// in a three-part cross the outer h on each side change places around the middle.
 int cable_source(const StitchDef& s, int j) {
   const int n = s.consumes, h = s.cable.held;
+  if (s.cable.middle > 0) return j < h ? n - h + j : j >= n - h ? j - (n - h) : j;
   return j < h ? n - h + j : j - h;
+}
+
+// Worked into the stitch below (brioche's k1 below): the needle goes through the loops
+// the live ones were pulled through, and the live loops drop off onto the new loop,
+// held by it as a tuck is. So the live loops lose their parents to the new loop and
+// become held loops beside them; a cast-on loop has none to give and is simply worked.
+std::vector<int> drop_into_stitch_below(Graph& g, std::vector<int> live) {
+  std::vector<int> parents;
+  for (int l : live) {
+    Loop& dropped = g.loops[static_cast<std::size_t>(l)];
+    if (dropped.parents.empty() || dropped.held) {
+      parents.push_back(l);
+      continue;
+    }
+    parents.insert(parents.end(), dropped.parents.begin(), dropped.parents.end());
+    dropped.parents.clear();
+    dropped.held = true;
+    parents.push_back(l);
+  }
+  return parents;
 }
 
 }  // namespace
@@ -92,8 +114,10 @@ Graph build(const Pattern& pattern) {
         default: {  // knit, purl, yarn over, decreases: one new loop through all they take
           std::vector<int> parents;
           for (int k = 0; k < s.consumes; ++k) parents.insert(parents.end(), live[at + k].begin(), live[at + k].end());
+          if (s.below) parents = drop_into_stitch_below(g, std::move(parents));
           for (int k = 0; k < s.produces; ++k) {
-            const int made = new_loop(k == 0 ? parents : std::vector<int>{}, false);
+            // An increase works every new loop through the old one; a yarn over has none.
+            const int made = new_loop(k == 0 || s.family == StitchFamily::increase ? parents : std::vector<int>{}, false);
             next.push_back({made});
           }
           break;

@@ -33,6 +33,13 @@ constexpr std::array<double, loop_points> feet = {1.0, 1.0, 1.0, 0.9, 0.75, 0.55
 constexpr std::array<double, loop_points> crossing = {0.3, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.2, 0.0,
                                                       0.2, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.3};
 
+// A twisted stitch (through the back loop): the lower legs change sides, the one from
+// the left foot passing in front, so the loop is crossed on itself at its base.
+constexpr std::array<double, loop_points> twist_swap = {0.0, 1.0, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0,
+                                                        0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 0.0};
+constexpr std::array<double, loop_points> twist_depth = {0.0, 1.0, 1.0, 1.0, 0.6, 0.2, 0.0, 0.0, 0.0,
+                                                         0.0, 0.0, 0.0, -0.2, -0.6, -1.0, -1.0, 0.0};
+
 // Of a gathered stitch's parents, the one lying on top: k2tog's left stitch (it leans
 // right), ssk's and sk2p's right one (they lean left), the centre of a cdd.
 std::size_t top_parent(const StitchDef& s, std::size_t parents) {
@@ -41,11 +48,6 @@ std::size_t top_parent(const StitchDef& s, std::size_t parents) {
     case Lean::centre: return parents / 2;
     default: return 0;
   }
-}
-
-bool purled(const StitchDef& s) {
-  return s.family == StitchFamily::purl ||
-         (s.family == StitchFamily::decrease && (s.name.front() == 'p' || s.name == "ssp"));
 }
 
 }  // namespace
@@ -109,6 +111,10 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
           p.x += 0.2 * W * head[i] * out.direction[l.course];
           break;
       }
+      if (stitch(l.stitch).twisted && (l.shape == Template::knit || l.shape == Template::purl)) {
+        p.x += twist_swap[i] * (W - 2.0 * p.x);
+        p.z += twist_depth[i] * 0.55 * d;
+      }
       l.data_points[i] = origin + p;
     }
     // Exactly the next loop's P0, not origin + W rounded differently.
@@ -130,9 +136,11 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
     else if (purled(s)) l.shape = Template::purl;
     else if (s.family == StitchFamily::cable && s.cable.purl_background) {
       // A twist's travelling stitches (those crossing in front) are knit, the rest purled.
+      // In a three-part cross only the middle, which stays put, is purled.
       const double from = centre_x(graph.loops[k.parents.front()].course, graph.loops[k.parents.front()].slot);
-      const bool in_front = s.cable.front ? from > centre_x(k.course, k.slot) : from < centre_x(k.course, k.slot);
-      l.shape = in_front ? Template::knit : Template::purl;
+      const double to = centre_x(k.course, k.slot);
+      const bool in_front = s.cable.front ? from > to : from < to;
+      l.shape = (s.cable.middle > 0 ? std::abs(from - to) > 0.25 * W : in_front) ? Template::knit : Template::purl;
     }
   }
   // The parents of every loop, the bind-off's too (the live stitches it works).
@@ -180,7 +188,7 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
       const double px = centre_x(parent.course, parent.wale);
       // In F cables the stitches moving left cross in front, in B those moving right.
       const bool in_front = s.cable.front ? px > cx : px < cx;
-      const double dz = (in_front ? 0.6 : -0.6) * d;
+      const double dz = std::abs(px - cx) < 0.25 * W ? 0.0 : (in_front ? 0.6 : -0.6) * d;  // a three-part cross's middle stays
       // Half the way in the child's legs, half in the parent's head: the cross spans two courses.
       for (int j = 0; j < loop_points; ++j) {
         child.data_points[j] += glm::dvec3(feet[j] * 0.5 * (px - cx), 0.0, crossing[j] * dz);

@@ -23,6 +23,7 @@ enum class StitchFamily : std::uint8_t {
   slip,       // the old loop moves across unworked; the yarn floats past it
   tuck,       // the yarn is caught on the needle; the old loop stays and is knitted later
   cable,      // stitches crossed over their neighbours
+  increase,   // one old loop worked several times (kfb, ctr dbl inc): every new loop through it
   no_stitch,  // a chart's grey square: a placeholder, no loop
 };
 
@@ -34,6 +35,9 @@ struct Cable {
   // Twists (T): the travelling stitches are knit, the rest purled. In F twists the held
   // stitches travel; in B twists the held stitches are the purls.
   bool purl_background = false;
+  // Three-part crosses (n/c/n): the `middle` stitches stay in the centre, the outer
+  // `held` on each side change places. 0 for two-part crosses.
+  int middle = 0;
 };
 
 struct StitchDef {
@@ -47,6 +51,8 @@ struct StitchDef {
   StitchFamily family = StitchFamily::knit;
   Lean lean = Lean::none;
   Cable cable;                   // for the cable family
+  bool twisted = false;          // worked through the back loop: the loop crossed on itself
+  bool below = false;            // worked into the stitch below: the live loop drops onto it
   // The stitch as it shows on the face when worked on a wrong-side row (k shows as p);
   // empty if it has no wrong-side form.
   std::string_view wrong_side_face;
@@ -57,6 +63,9 @@ std::span<const StitchDef> stitch_table();
 const StitchDef& stitch(StitchId id);
 std::optional<StitchId> find_stitch(std::string_view name_or_alias);  // case-insensitive
 StitchId stitch_id(std::string_view canonical_name);                    // asserts it exists
+// Whether the stitch's new loops are purled (pulled through from the front: a bump on
+// the face): purls, p-decreases and p-increases, ssp, m1p.
+bool purled(const StitchDef& s);
 // The face-view stitch for `id` worked on a wrong-side row, if it has one.
 std::optional<StitchId> wrong_side_face(StitchId id);
 // The known name or alias nearest to `word` (edit distance), for "did you mean" hints.

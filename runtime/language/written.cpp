@@ -90,13 +90,22 @@ class Parser {
     }
     if (!open.empty()) return fail(std::string("'") + open.back() + "' is never closed");
     RowText r;
+    if (as_they_appear(text_)) {
+      r.as_they_appear = true;
+      return r;
+    }
     r.before = sequence();
-    if (peek().kind == Kind::star) {
+    if (open_) {
+      if (peek().kind == Kind::star) return fail("a row can have one repeat only: \"*...; rep from *\" or \"... to end\"");
+      split_open_repeat(r);
+    } else if (peek().kind == Kind::star) {
       next();
       r.star = sequence();
+      if (open_) return fail("a repeat inside a *repeat; write one repeat only");
       if (peek().kind == Kind::star) next();  // "*k2, p2*; rep from *"
-      if (peek().kind != Kind::semicolon) return fail("a *repeat needs \"; rep from *\" after it");
-      next();
+      // "; rep from *" as the core language writes it, or printed ", repeat from *".
+      if (peek().kind == Kind::semicolon || peek().kind == Kind::comma) next();
+      else if (peek().kind != Kind::word) return fail("a *repeat needs \"; rep from *\" after it");
       if (!repeat_clause(r)) return *error_;
       if (peek().kind == Kind::comma) {
         next();
@@ -120,33 +129,92 @@ class Parser {
     return *error_;
   }
 
+  static bool is_repeat_word(std::string_view w) {
+    const std::string l = lower(w);
+    return l == "rep" || l == "repeat";
+  }
+
   // "rep from *" [to end | across | to last N st(s)]
   bool repeat_clause(RowText& r) {
     std::vector<std::string> words;
     while (peek().kind == Kind::word) words.push_back(lower(next().text));
-    if (words.size() < 2 || words[0] != "rep" || words[1] != "from" || peek().kind != Kind::star) {
+    if (words.size() < 2 || !is_repeat_word(words[0]) || words[1] != "from" || peek().kind != Kind::star) {
       fail("after \";\" write \"rep from *\"");
       return false;
     }
     next();
     words.clear();
     while (peek().kind == Kind::word) words.push_back(lower(next().text));
-    if (words.empty() || (words.size() == 2 && words[0] == "to" && words[1] == "end") ||
-        (words.size() == 1 && words[0] == "across")) {
+    if (words.empty() || (words.size() == 1 && words[0] == "across")) return true;
+    if (const auto to = to_clause(words)) {
+      r.to_last = *to;
       return true;
     }
-    auto is_st = [](const std::string& w) { return w == "st" || w == "sts" || w == "stitch" || w == "stitches"; };
-    if (words.size() == 4 && words[0] == "to" && words[1] == "last" && whole(words[2]) && is_st(words[3])) {
-      r.to_last = *whole(words[2]);
-      return true;
-    }
-    if (words.size() == 3 && words[0] == "to" && words[1] == "last" && is_st(words[2])) {  // "to last st"
-      r.to_last = 1;
-      return true;
-    }
-    fail("\"rep from * " + join(std::vector<std::string_view>(words.begin(), words.end())) +
-         "\" is not understood; write \"rep from *\", \"rep from * to end\" or \"rep from * to last N sts, ...\"");
+    if (!error_)
+      fail("\"rep from * " + join(std::vector<std::string_view>(words.begin(), words.end())) +
+           "\" is not understood; write \"rep from *\", \"rep from * to end\" or \"rep from * to last N sts, ...\"");
     return false;
+  }
+
+  // How far a repeat goes: "to end [of row | round | rnd]" (0 stitches after it),
+  // "to last [N] st(s)", "to N st(s) before end [of ...]"; nothing if the words say
+  // something else.
+  static std::optional<int> to_clause(std::span<const std::string> w) {
+    auto is_st = [](const std::string& x) { return x == "st" || x == "sts" || x == "stitch" || x == "stitches"; };
+    auto end_of = [](std::span<const std::string> rest) {
+      return rest.empty() || (rest.size() == 2 && rest[0] == "of" &&
+                              (rest[1] == "row" || rest[1] == "round" || rest[1] == "rnd" || rest[1] == "needle"));
+    };
+    if (w.size() < 2 || w[0] != "to") return std::nullopt;
+    if (w[1] == "end" && end_of(w.subspan(2))) return 0;
+    if (w[1] == "last" && w.size() == 4 && whole(w[2]) && is_st(w[3])) return whole(w[2]);
+    if (w[1] == "last" && w.size() == 3 && is_st(w[2])) return 1;
+    if (w.size() >= 5 && whole(w[1]) && is_st(w[2]) && w[3] == "before" && w[4] == "end" && end_of(w.subspan(5)))
+      return whole(w[1]);
+    return std::nullopt;
+  }
+
+  static bool as_they_appear(std::string_view text) {
+    std::string t = lower(text);
+    while (!t.empty() && (t.back() == '.' || std::isspace(static_cast<unsigned char>(t.back())))) t.pop_back();
+    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.erase(t.begin());
+    for (const char* phrase : {"knit the knit sts and purl the purl sts", "k the k sts and p the p sts",
+                               "knit the knit stitches and purl the purl stitches", "knit the knits and purl the purls",
+                               "work sts as they appear", "work the sts as they appear", "work all sts as they appear",
+                               "k the knit sts and p the purl sts"})
+      if (t == phrase) return true;
+    return false;
+  }
+
+  // An open repeat ("(p2, k2) to 3 sts before end", "k to end") is the row's *repeat:
+  // what comes before it is worked once first, what follows it once last. "k2, p2 to
+  // end" repeats the whole run, as knitters mean it; "k1, p to end" only the p.
+  void split_open_repeat(RowText& r) {
+    Sequence all = std::move(r.before);
+    const std::size_t at = open_->element;
+    const std::size_t first = open_->whole_run ? 0 : at;
+    r.before.assign(std::make_move_iterator(all.begin()), std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(first)));
+    r.star = Sequence(std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(first)),
+                      std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(at) + 1));
+    r.after.assign(std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(at) + 1), std::make_move_iterator(all.end()));
+    if (open_->to_last > 0 || !r.after.empty()) r.to_last = open_->to_last;
+  }
+
+  // Marks the element just added to `seq` as the open repeat, from the words after it.
+  bool open_repeat(std::span<const std::string> clause, Sequence& seq, bool counted_stitch) {
+    const auto to = to_clause(clause);
+    if (!to) return false;
+    if (depth_ > 0) {
+      fail("\"" + join(std::vector<std::string_view>(clause.begin(), clause.end())) + "\" inside brackets; repeat the group instead");
+      return true;
+    }
+    if (open_) {
+      fail("a row can have one repeat only");
+      return true;
+    }
+    const bool plain_run = std::none_of(seq.begin(), seq.end(), [](const Element& e) { return e.is_group; });
+    open_ = Open{seq.size() - 1, *to, *to == 0 && counted_stitch && plain_run && seq.size() > 1};
+    return true;
   }
 
   Sequence sequence() {
@@ -179,14 +247,31 @@ class Parser {
           fail("an empty group \"()\"");
           break;
         }
+        if (peek().kind == Kind::word && lower(peek().text) == "to") {
+          std::vector<std::string> clause;
+          while (peek().kind == Kind::word) clause.push_back(lower(next().text));
+          seq.push_back(std::move(group));
+          if (!open_repeat(clause, seq, false))
+            fail("\"" + join(std::vector<std::string_view>(clause.begin(), clause.end())) +
+                 "\" after a group is not understood; write \"to end\" or \"to 3 sts before end\"");
+          continue;
+        }
         group.count = group_count();
         if (group.count > 0) seq.push_back(std::move(group));
         continue;
       }
-      if (t.kind != Kind::word) break;
+      if (t.kind != Kind::word || is_repeat_word(t.text)) break;
       std::vector<std::string_view> words;
       while (peek().kind == Kind::word) words.push_back(next().text);
+      // "p2 to end of round": the stitch, then how far it repeats.
+      const auto to = std::find_if(words.begin(), words.end(), [](std::string_view w) { return lower(w) == "to"; });
+      std::vector<std::string> clause;
+      for (auto w = to; w != words.end(); ++w) clause.push_back(lower(*w));
+      if (to != words.begin() && to != words.end() && to_clause(clause)) words.erase(to, words.end());
+      else clause.clear();
       if (!item(words, seq)) break;
+      if (!clause.empty()) open_repeat(clause, seq, last_counted_);
+      if (error_) break;
     }
     return seq;
   }
@@ -228,6 +313,31 @@ class Parser {
         yarn = static_cast<int>(it - yarns_.begin());
         words = words.first(words.size() - 1);
       }
+    }
+    // "sl1, k2tog, psso": passing the slipped stitch over makes the two one stitch.
+    if (words.size() == 1 && (lower(words[0]) == "psso" || lower(words[0]) == "pass slipped stitch over")) return pass_over(seq);
+    // "k1tbl": a count run into the next word.
+    std::string spaced;
+    if (!find_stitch(join(words))) {
+      const std::string_view w = words[0];
+      std::size_t i = 0;
+      while (i < w.size() && std::isalpha(static_cast<unsigned char>(w[i]))) ++i;
+      std::size_t j = i;
+      while (j < w.size() && std::isdigit(static_cast<unsigned char>(w[j]))) ++j;
+      if (i > 0 && j > i && j < w.size() && std::isalpha(static_cast<unsigned char>(w[j]))) {
+        spaced = std::string(w.substr(0, j)) + " " + std::string(w.substr(j));
+        for (std::size_t k = 1; k < words.size(); ++k) spaced += " " + std::string(words[k]);
+      }
+    }
+    std::vector<std::string_view> respaced;
+    if (!spaced.empty()) {
+      for (std::size_t a = 0; a < spaced.size();) {
+        const std::size_t b = spaced.find(' ', a);
+        respaced.push_back(std::string_view(spaced).substr(a, b == std::string::npos ? std::string::npos : b - a));
+        if (b == std::string::npos) break;
+        a = b + 1;
+      }
+      words = respaced;
     }
     // The whole text as a name first ("k2tog", "sl1-k2tog-psso", "no stitch").
     std::optional<StitchId> id = find_stitch(join(words));
@@ -273,7 +383,24 @@ class Parser {
     e.stitch = {*id, yarn.value_or(-1)};
     e.count = count;
     seq.push_back(e);
+    last_counted_ = explicit_count;
     return true;
+  }
+
+  // "psso" after "sl1, k1" or "sl1, k2tog": the two become skp (ssk) or sk2p.
+  bool pass_over(Sequence& seq) {
+    auto single = [](const Element& e, std::string_view name) {
+      return !e.is_group && e.count == 1 && stitch(e.stitch.stitch).name == name;
+    };
+    if (seq.size() >= 2 && single(seq[seq.size() - 2], "sl wyib") &&
+        (single(seq.back(), "k") || single(seq.back(), "k2tog"))) {
+      const bool two = stitch(seq.back().stitch.stitch).name == "k2tog";
+      seq.pop_back();
+      seq.back().stitch.stitch = stitch_id(two ? "sk2p" : "ssk");
+      return true;
+    }
+    fail("psso passes a slipped stitch over the one just worked: write it after \"sl1, k1\" or \"sl1, k2tog\"");
+    return false;
   }
 
   std::string_view text_;
@@ -281,6 +408,13 @@ class Parser {
   std::span<const std::string> yarns_;
   std::size_t pos_ = 0;
   int depth_ = 0;
+  bool last_counted_ = false;  // the last stitch read had a count written on it ("p2")
+  struct Open {
+    std::size_t element;  // the open repeat's element in the top-level sequence
+    int to_last;          // stitches left after it, 0: to the end
+    bool whole_run;       // "k2, p2 to end": the run from the row's start repeats
+  };
+  std::optional<Open> open_;
   static constexpr int max_depth = 16;  // knitters nest two or three; the bound keeps recursion shallow
   std::optional<TextError> error_;
 };

@@ -7,6 +7,10 @@
 //   *k2, p2; rep from * to last 2 sts, k2    and after it
 //   (k2, p2) x6   [k2, p2] 6 times   (k1, p1) twice
 //   sl1 wyif, k2tog, C4F, yo2, k2 B          names from the stitch table, counts, a yarn id
+//   k1, (p2, k2) to 3 sts before end, p2, k1 an open repeat; also "k to end", "p to last st"
+//   *k1, yo, k2; repeat from *.              printed forms: "repeat", a comma before it
+//   sl1, k2tog, psso                         passing over, as the stitch it makes (sk2p)
+//   knit the knit sts and purl the purl sts  every stitch as it shows
 #pragma once
 
 #include <optional>
@@ -44,9 +48,11 @@ struct Element {
 
 struct RowText {
   Sequence before;              // everything, when there is no *repeat
-  std::optional<Sequence> star; // *...; rep from *
+  std::optional<Sequence> star; // *...; rep from *, or "(p2, k2) to 3 sts before end"
   std::optional<int> to_last;   // "to last N sts"
   Sequence after;               // what follows "rep from * ..."
+  // "knit the knit sts and purl the purl sts": every stitch worked as it shows.
+  bool as_they_appear = false;
 };
 
 // Parses a row's text. `yarn_ids` are the declared yarns a stitch may name after it
