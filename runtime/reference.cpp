@@ -80,7 +80,15 @@ std::string language_reference() {
         "k1, *p1, k1; rep from *                  fixed stitches before the repeat\n"
         "*k2, p2; rep from * to last 2 sts, k2    and after it\n"
         "(k2, p2) x6   [k2, p2] 6 times   (k1, p1) twice\n"
+        "k1, (p2, k2) to 3 sts before end, p2, k1 an open repeat; also k to end, p to last st, k2, p2 to end\n"
+        "*K1, yo, k2tog, repeat from *.          the printed form: a comma, \"repeat\", a full stop\n"
+        "sl1, k2tog, psso                         passing over makes one stitch of the two (sk2p; sl1, k1, psso is skp)\n"
+        "k1tbl   K2 TBL   K1 below                counts run into names, any case\n"
+        "knit the knit sts and purl the purl sts  every stitch as it shows (also: work sts as they appear)\n"
         "```\n\n"
+        "`knitspeak [[ ... ]]` takes whole printed patterns: `Row 1 (RS): ...`, `Rows 2 and 4: Purl.`, "
+        "`Rnds 3, 5, and 7-9: ...`, `Rows 5-8: Repeat rows 1-4.`, `Repeat rows 3-6.`, a stated `(14 sts)` that is "
+        "checked, bullets and full stops; headings and notes are skipped with a warning.\n\n"
         "A row that does not come out exactly is an error that says how many stitches are left over or missing.\n";
   return md;
 }

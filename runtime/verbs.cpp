@@ -2,6 +2,7 @@
 // The verb table at the end declares them for the bindings and the reference docs.
 #include <algorithm>
 
+#include "language/knitspeak.hpp"
 #include "script.hpp"
 
 namespace knitc::runtime {
@@ -61,8 +62,11 @@ void add_course(lua_State* L, std::vector<Op> ops, const SourceLocation& where) 
   s.pattern.courses.push_back(std::move(c));
 }
 
-// Works written text (already parsed) as the next row.
-void work_written(lua_State* L, const language::RowText& text, const std::string& source, const SourceLocation& line) {
+// Works written text (already parsed) as the next row. `line` is where the course comes
+// from; `located`: errors point at it too (a line inside a text block), not the caller.
+void work_written(lua_State* L, const language::RowText& text, const std::string& source, const SourceLocation& line,
+                  bool located = false) {
+  auto stop = [&](const std::string& m) { located ? fail_at(L, line, m) : fail(L, m); };
   Script& s = script_of(L);
   need_live(L, s);
   const int row = next_row(s);
@@ -76,18 +80,36 @@ void work_written(lua_State* L, const language::RowText& text, const std::string
     return;
   }
   auto worked = language::work_row(text, source, s.live, row);
-  if (auto* e = std::get_if<language::TextError>(&worked)) fail(L, e->message);
+  if (auto* e = std::get_if<language::TextError>(&worked)) stop(e->message);
   auto ops = language::face_view(std::get<std::vector<language::Worked>>(worked), side_of(s, row), s.current_yarn);
   if (auto* e = std::get_if<language::TextError>(&ops))
-    fail(L, "row " + std::to_string(row) + " " + language::quote_row(source) + " is a wrong-side row: " + e->message);
+    stop("row " + std::to_string(row) + " " + language::quote_row(source) + " is a wrong-side row: " + e->message);
   add_course(L, std::move(std::get<std::vector<Op>>(ops)), line);
 }
 
-language::RowText parse_written(lua_State* L, const std::string& text) {
+language::RowText parse_written(lua_State* L, const std::string& text, const SourceLocation* at = nullptr) {
   auto parsed = language::parse_row(text, script_of(L).yarn_ids);
-  if (auto* e = std::get_if<language::TextError>(&parsed))
-    fail(L, "row " + std::to_string(next_row(script_of(L))) + " " + language::quote_row(text) + ": " + e->message);
+  if (auto* e = std::get_if<language::TextError>(&parsed)) {
+    const std::string m = "row " + std::to_string(next_row(script_of(L))) + " " + language::quote_row(text) + ": " + e->message;
+    at ? fail_at(L, *at, m) : fail(L, m);
+  }
   return std::get<language::RowText>(std::move(parsed));
+}
+
+// Where a text block passed to the running binding (chart [[...]], knitspeak [[...]])
+// starts: the file and the line of its first line.
+SourceLocation block_start(lua_State* L) {
+  SourceLocation at{sandbox_of(L).file, caller_line(L)};
+  lua_Debug ar;
+  for (int level = 1; lua_getstack(L, level, &ar) != 0; ++level) {
+    if (lua_getinfo(L, "Sl", &ar) != 0 && ar.currentline > 0) {
+      const auto& sources = sandbox_of(L).sources;
+      const auto it = ar.source[0] == '@' ? sources.find(ar.source + 1) : sources.end();
+      if (it != sources.end()) at = {it->first, long_string_first_line(it->second, ar.currentline)};
+      break;
+    }
+  }
+  return at;
 }
 
 int cast_on_verb(lua_State* L) {
@@ -230,22 +252,9 @@ int chart_verb(lua_State* L) {
     fail(L, std::string("chart takes the chart as a string, chart [[ ... ]], or a table, not a ") + luaL_typename(L, 1));
   }
   // The chart text's first line: where its long string starts, in the chunk that called.
-  int first_line = caller_line(L);
-  std::string chart_file = sandbox_of(L).file;
-  {
-    lua_Debug ar;
-    for (int level = 1; lua_getstack(L, level, &ar) != 0; ++level) {
-      if (lua_getinfo(L, "Sl", &ar) != 0 && ar.currentline > 0) {
-        const auto& sources = sandbox_of(L).sources;
-        const auto it = ar.source[0] == '@' ? sources.find(ar.source + 1) : sources.end();
-        if (it != sources.end()) {
-          first_line = long_string_first_line(it->second, ar.currentline);
-          chart_file = it->first;
-        }
-        break;
-      }
-    }
-  }
+  const SourceLocation start = block_start(L);
+  const int first_line = start.line;
+  const std::string& chart_file = start.file;
   auto parsed = language::parse_chart(text, legend);
   if (auto* e = std::get_if<language::ChartError>(&parsed)) fail_at(L, {chart_file, first_line + e->line}, e->message);
   const auto& rows = std::get<std::vector<language::ChartRow>>(parsed);
@@ -281,6 +290,42 @@ int chart_verb(lua_State* L) {
       }
       add_course(L, std::move(ops), at);
     }
+  }
+  return 0;
+}
+
+// knitspeak [[ Row 1 (RS): ... ]]: printed pattern text, each row worked as written
+// instructions; errors point at the text's own line.
+int knitspeak_verb(lua_State* L) {
+  need_pattern(L, "knitspeak");
+  Script& s = script_of(L);
+  if (lua_type(L, 1) != LUA_TSTRING)
+    fail(L, std::string("knitspeak takes the printed pattern as a string, knitspeak [[ Row 1: ... ]], not a ") + luaL_typename(L, 1));
+  const std::string text = lua_tostring(L, 1);
+  const SourceLocation start = block_start(L);
+  auto at = [&](int line) { return SourceLocation{start.file, start.line + line}; };
+  auto read = language::read_knitspeak(text, s.yarn_ids);
+  if (auto* e = std::get_if<language::KnitspeakNote>(&read)) fail_at(L, at(e->line), e->message);
+  const auto& block = std::get<language::Knitspeak>(read);
+  for (const auto& skipped : block.skipped) {
+    const SourceLocation w = at(skipped.line);
+    s.warnings.push_back(w.file + ":" + std::to_string(w.line) + ": warning: " + skipped.message);
+  }
+  if (block.rows.empty()) fail(L, "the knitspeak text has no rows; write them as Row 1: ..., Row 2: ...");
+  for (const auto& r : block.rows) {
+    const SourceLocation where = at(r.line);
+    std::string label = r.number > 0 ? "row " + std::to_string(r.number) + " of the text" : "this line";
+    if (r.repeat) label = "the repeat of " + label;
+    // A first row printed as a wrong-side row: the knitter turned the work first.
+    if (s.pattern.courses.empty() && r.side == Side::wrong && s.pattern.knitting == Knitting::flat) s.first_row_wrong_side = true;
+    if (r.side && s.pattern.knitting == Knitting::flat && *r.side != side_of(s, next_row(s)))
+      fail_at(L, where, label + " is printed as a " + (*r.side == Side::right ? "right" : "wrong") + "-side row but is row " +
+                            std::to_string(next_row(s)) + " of the fabric, a " +
+                            (*r.side == Side::right ? "wrong" : "right") + "-side row; check the rows before it");
+    work_written(L, parse_written(L, r.text, &where), r.text, where, true);
+    if (r.stitches_after && *r.stitches_after != s.live)
+      fail_at(L, where, label + " says it leaves " + std::to_string(*r.stitches_after) + " sts but its stitches leave " +
+                            std::to_string(s.live) + "; the text's count does not come out (check the row or the cast-on)");
   }
   return 0;
 }
@@ -346,6 +391,13 @@ constexpr Verb verbs[] = {
      "stitches; rep repeats the whole chart upward. On wrong-side rows the knitter reads the chart from the left and "
      "works each symbol's wrong-side form; the face looks as drawn.",
      "chart [[\n  | | . .\n  | | . .\n]]"},
+    {"knitspeak", knitspeak_verb, "knitspeak(text)",
+     "Works a stitch pattern pasted as a book or Stitch Maps prints it: lines such as `Row 1 (RS): K1, *p1, k1; "
+     "repeat from *.`, `Rows 2 and 4: Purl.`, `Rnds 3-5: Knit.`, `Rows 5-8: Repeat rows 1-4.`, `Repeat rows 3-6.` "
+     "(once more, there), an unnumbered line of stitches, and a stated count `(14 sts)`, which is checked. Rows are "
+     "worked in number order; a first row printed (WS) is worked from the wrong side. Lines that are not rows "
+     "(headings, notes) are skipped with a warning; errors name the text's own line.",
+     "knitspeak [[\n  Row 1 (RS): *K2, p2; rep from *.\n  Row 2: Knit the knit sts and purl the purl sts.\n]]"},
     {"legend", legend_verb, "legend { [symbol] = stitch | { stitch, yarn = id }, ... }",
      "Adds or changes chart symbols for the charts that follow.", "legend { [\"#\"] = { \"k\", yarn = \"B\" } }"},
     {"yarn", yarn_verb, "yarn(id)", "Changes to another declared yarn for the rows that follow: stripes.", "yarn \"B\""},

@@ -180,6 +180,39 @@ const BadScript catalogue[] = {
     {"require_escape",
      "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\nlocal m = require \"../../etc/passwd\"\n",
      "t.lua:2: module name \"../../etc/passwd\" must be letters, digits, _ and -, with dots between folders, e.g. \"lace.edgings\""},
+    {"knitspeak_row_twice",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\n"
+     "knitspeak [[\nRow 1 (RS): Knit.\nRows 1 and 2: Purl.\n]]\n",
+     "t.lua:5: row 1 is given twice"},
+    {"knitspeak_gap",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\n"
+     "knitspeak [[\nRow 1: Knit.\nRow 3: Knit.\n]]\n",
+     "t.lua:5: row 3 is given but row 2 never is; number the rows without a gap"},
+    {"knitspeak_unknown_stitch_on_its_line",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } } }\ncast_on(4)\n"
+     "knitspeak [[\n  Round 1: Knit.\n  Round 2: k2, p2tig.\n]]\n",
+     "t.lua:5: row 2 \"k2, p2tig\": unknown stitch 'p2tig'; did you mean p2tog?"},
+    {"knitspeak_count_does_not_come_out",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } } }\ncast_on(4)\n"
+     "knitspeak [[\nRnd 1: k1, yo, k3 (6 sts).\n]]\n",
+     "t.lua:4: row 1 of the text says it leaves 6 sts but its stitches leave 5; the text's count does not come out (check the "
+     "row or the cast-on)"},
+    {"knitspeak_repeat_of_rows_not_given",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } } }\ncast_on(4)\n"
+     "knitspeak [[\nRnd 1: Knit.\nRepeat rnds 1-2.\n]]\n",
+     "t.lua:5: repeats row 2, which has not been given before this line"},
+    {"knitspeak_side_disagrees",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\n"
+     "knitspeak [[\nRow 1 (RS): Knit.\nRow 2 (RS): Knit.\n]]\n",
+     "t.lua:5: row 2 of the text is printed as a right-side row but is row 2 of the fabric, a wrong-side row; check the rows "
+     "before it"},
+    {"psso_alone",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } } }\ncast_on(4)\nrow \"k2, psso, k2\"\n",
+     "t.lua:3: row 1 \"k2, psso, k2\": psso passes a slipped stitch over the one just worked: write it after \"sl1, k1\" or "
+     "\"sl1, k2tog\""},
+    {"open_repeat_twice",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } } }\ncast_on(4)\nrow \"k to last st, p to end\"\n",
+     "t.lua:3: row 1 \"k to last st, p to end\": a row can have one repeat only"},
     {"lua_runtime_error",
      "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nlocal x = nil + 1\n",
      "t.lua:3: attempt to perform arithmetic on a nil value"},

@@ -528,6 +528,9 @@ std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::
     return TextError{name + " needs at least " + stitches(a + b + s) + " for one repeat but " + std::to_string(live) +
                      " are live (" + over_or_short(room - b) + "); add stitches or shorten the repeat"};
   }
+  if (room % b != 0 && a == 0 && s == 0)
+    return TextError{name + " repeats every " + stitches(b) + " and does not fit " + std::to_string(live) +
+                     " live stitches (" + over_or_short(room % b) + "); make the count a multiple of " + std::to_string(b)};
   if (room % b != 0)
     return TextError{name + ": the *repeat of " + stitches(b) + " does not fit the " + std::to_string(room) +
                      " stitches between the fixed ones (" + over_or_short(room % b) +

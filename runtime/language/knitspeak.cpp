@@ -1,0 +1,279 @@
+#include "language/knitspeak.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <map>
+
+#include "language/written.hpp"
+
+namespace knitc::language {
+
+namespace {
+
+constexpr int max_row_number = 100'000;
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
+  return out;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+// Bullets and list marks before a line; never "*", which starts a repeat.
+std::string_view without_bullet(std::string_view s) {
+  for (std::string_view mark : {"\u2022", "\u00b7", "\u2013", "- ", "+ "}) {
+    if (s.substr(0, mark.size()) == mark) return trim(s.substr(mark.size()));
+  }
+  return s;
+}
+
+// The words of a number list, "1, 5, and 9", "1-3 and 8-10", "from 1 to 2": every number,
+// or nothing if the text is anything else.
+std::optional<std::vector<int>> numbers(std::string_view text) {
+  std::string t = lower(text);
+  for (std::string_view dash : {"\u2013", "\u2014"}) {  // en and em dashes as ranges
+    for (std::size_t at; (at = t.find(dash)) != std::string::npos;) t.replace(at, dash.size(), "-");
+  }
+  std::vector<std::string> words;
+  std::string word;
+  auto flush = [&] {
+    if (!word.empty()) words.push_back(word);
+    word.clear();
+  };
+  for (char c : t) {
+    if (std::isdigit(static_cast<unsigned char>(c)) || std::isalpha(static_cast<unsigned char>(c))) {
+      word += c;
+    } else {
+      flush();
+      if (c == '-') words.push_back("-");
+    }
+  }
+  flush();
+  std::vector<int> out;
+  auto number = [](const std::string& w) -> std::optional<int> {
+    int v = 0;
+    const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+    if (ec != std::errc() || end != w.data() + w.size() || v < 1 || v > max_row_number) return std::nullopt;
+    return v;
+  };
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (words[i] == "and" || words[i] == "from") continue;
+    const auto a = number(words[i]);
+    if (!a) return std::nullopt;
+    if (i + 2 < words.size() && (words[i + 1] == "-" || words[i + 1] == "to" || words[i + 1] == "through")) {
+      const auto b = number(words[i + 2]);
+      if (!b || *b < *a) return std::nullopt;
+      for (int n = *a; n <= *b; ++n) out.push_back(n);
+      i += 2;
+      continue;
+    }
+    out.push_back(*a);
+  }
+  if (out.empty()) return std::nullopt;
+  return out;
+}
+
+// "rows 1-4", "rnds 3 and 4", "from 1 to 2" after "repeat": the rows, if that is what it says.
+std::optional<std::vector<int>> repeated_rows(std::string_view body) {
+  std::string t = lower(trim(body));
+  while (!t.empty() && (t.back() == '.' || std::isspace(static_cast<unsigned char>(t.back())))) t.pop_back();
+  for (std::string_view verb : {"repeat ", "rep ", "work "}) {
+    if (t.rfind(verb, 0) != 0) continue;
+    std::string rest = t.substr(verb.size());
+    for (std::string_view noun : {"rows ", "row ", "rounds ", "round ", "rnds ", "rnd "}) {
+      if (rest.rfind(noun, 0) == 0) {
+        rest = rest.substr(noun.size());
+        // "repeat rows 1-4 once more", "... twice" are not read: once, where it stands.
+        return numbers(rest);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+struct Label {
+  std::vector<int> rows;
+  std::optional<Side> side;
+  std::string body;
+};
+
+// "Row 1 (RS): ...", "Rnds 2 and 4: ...", "Rows 1, 3 (WS). ..."
+std::optional<Label> label(std::string_view line) {
+  const std::string l = lower(line);
+  std::size_t at = 0;
+  bool found = false;
+  for (std::string_view noun : {"rounds", "round", "rnds", "rnd", "rows", "row"}) {
+    if (l.rfind(noun, 0) == 0 && l.size() > noun.size() && !std::isalpha(static_cast<unsigned char>(l[noun.size()]))) {
+      at = noun.size();
+      found = true;
+      break;
+    }
+  }
+  if (!found) return std::nullopt;
+  const std::size_t colon = l.find(':', at);
+  if (colon == std::string::npos) return std::nullopt;
+  std::string head = l.substr(at, colon - at);
+  Label out;
+  for (auto [mark, side] : {std::pair{"(rs)", Side::right}, {"(ws)", Side::wrong}, {"(right side)", Side::right},
+                            {"(wrong side)", Side::wrong}}) {
+    const auto m = head.find(mark);
+    if (m != std::string::npos) {
+      out.side = side;
+      head.erase(m, std::string_view(mark).size());
+    }
+  }
+  const auto rows = numbers(head);
+  if (!rows) return std::nullopt;
+  out.rows = *rows;
+  out.body = std::string(trim(line.substr(colon + 1)));
+  return out;
+}
+
+// A trailing "(14 sts)": the stitch count the row leaves; "(multiple of 12 sts, plus 11)"
+// and other notes in brackets at the end are dropped.
+std::string without_count(std::string text, std::optional<int>& count) {
+  std::string_view t = trim(text);
+  while (!t.empty() && t.back() == '.') t = trim(t.substr(0, t.size() - 1));
+  if (t.empty() || t.back() != ')') return std::string(t);
+  const std::size_t open = t.rfind('(');
+  if (open == std::string_view::npos) return std::string(t);
+  const std::string inside = lower(trim(t.substr(open + 1, t.size() - open - 2)));
+  int n = 0;
+  const auto [end, ec] = std::from_chars(inside.data(), inside.data() + inside.size(), n);
+  const std::string_view rest = trim(std::string_view(inside).substr(static_cast<std::size_t>(end - inside.data())));
+  if (ec == std::errc() && (rest == "sts" || rest == "st" || rest == "stitches" || rest == "stitch")) {
+    count = n;
+    return std::string(trim(t.substr(0, open)));
+  }
+  if (inside.rfind("multiple of", 0) == 0) return std::string(trim(t.substr(0, open)));
+  return std::string(t);
+}
+
+bool is_fence(std::string_view line) { return line.substr(0, 3) == "```" || line.substr(0, 3) == "~~~"; }
+
+}  // namespace
+
+std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, std::span<const std::string> yarn_ids) {
+  Knitspeak out;
+  struct Given {
+    int line;
+    std::string text;
+    std::optional<Side> side;
+    std::optional<int> count;
+    std::optional<int> same_as;  // "Rows 5-8: Repeat rows 1-4": row 5 is row 1
+  };
+  std::map<int, Given> given;  // by number: rows are worked in number order
+  std::map<int, std::size_t> emitted;  // number -> index in out.rows
+  int next_number = 0;                 // the next numbered row to work; 0 until the first
+  std::optional<KnitspeakNote> error;
+
+  auto emit = [&](int number, const Given& g, int line) {
+    KnitspeakRow r;
+    r.line = line;
+    r.number = number;
+    r.side = g.side;
+    r.stitches_after = g.count;
+    if (g.same_as) {
+      const auto it = emitted.find(*g.same_as);
+      if (it == emitted.end()) {
+        error = KnitspeakNote{g.line, "row " + std::to_string(number) + " repeats row " + std::to_string(*g.same_as) +
+                                          ", which comes later or not at all; repeat rows already worked"};
+        return;
+      }
+      const KnitspeakRow& source = out.rows[it->second];
+      r.text = source.text;
+      if (!r.side && source.side) r.side = source.side;
+      if (!r.stitches_after) r.stitches_after = source.stitches_after;
+    } else {
+      r.text = g.text;
+    }
+    emitted[number] = out.rows.size();
+    out.rows.push_back(std::move(r));
+  };
+  // Works the numbered rows given so far, in order, from the next one on.
+  auto flush = [&] {
+    if (next_number == 0 && !given.empty()) next_number = given.begin()->first;
+    for (auto it = given.find(next_number); it != given.end() && !error; it = given.find(next_number)) {
+      emit(next_number, it->second, it->second.line);
+      given.erase(it);
+      ++next_number;
+    }
+  };
+
+  int line_number = 0;
+  for (std::size_t start = 0; start <= block.size() && !error; ++line_number) {
+    const std::size_t end = std::min(block.find('\n', start), block.size());
+    const std::string_view raw = block.substr(start, end - start);
+    start = end + 1;
+    std::string_view line = without_bullet(trim(raw));
+    if (line.empty() || is_fence(line)) continue;
+
+    if (const auto l = label(line)) {
+      const auto again = repeated_rows(l->body);
+      std::optional<int> count;
+      const std::string text = again ? std::string() : without_count(l->body, count);
+      if (!again && text.empty()) {
+        error = KnitspeakNote{line_number, "row " + std::to_string(l->rows.front()) + " has no stitches after its label"};
+        break;
+      }
+      if (again && again->size() != l->rows.size()) {
+        error = KnitspeakNote{line_number, std::to_string(l->rows.size()) + " rows repeat " + std::to_string(again->size()) +
+                                               "; give as many rows as they repeat (Rows 5-8: Repeat rows 1-4)"};
+        break;
+      }
+      for (std::size_t i = 0; i < l->rows.size(); ++i) {
+        const int n = l->rows[i];
+        if (given.count(n) || emitted.count(n)) {
+          error = KnitspeakNote{line_number, "row " + std::to_string(n) + " is given twice"};
+          break;
+        }
+        given[n] = Given{line_number, text, l->side, count, again ? std::optional<int>((*again)[i]) : std::nullopt};
+      }
+      continue;
+    }
+    if (const auto again = repeated_rows(line)) {  // "Repeat rows 3-6." where it stands
+      flush();
+      for (int n : *again) {
+        const auto it = emitted.find(n);
+        if (it == emitted.end()) {
+          error = KnitspeakNote{line_number, "repeats row " + std::to_string(n) + ", which has not been given before this line"};
+          break;
+        }
+        KnitspeakRow r = out.rows[it->second];
+        r.line = line_number;
+        r.repeat = true;
+        out.rows.push_back(std::move(r));
+      }
+      continue;
+    }
+    std::optional<int> count;
+    const std::string text = without_count(std::string(line), count);
+    if (!text.empty() && parse_row(text, yarn_ids).index() == 0) {  // an unnumbered row
+      flush();
+      KnitspeakRow r;
+      r.line = line_number;
+      r.text = text;
+      r.stitches_after = count;
+      out.rows.push_back(std::move(r));
+      continue;
+    }
+    out.skipped.push_back({line_number, "not a row, skipped: " + quote_row(line)});
+  }
+  if (error) return *error;
+  flush();
+  if (error) return *error;
+  if (!given.empty()) {
+    const auto& [n, g] = *given.begin();
+    return KnitspeakNote{g.line, "row " + std::to_string(n) + " is given but row " + std::to_string(next_number) +
+                                     " never is; number the rows without a gap"};
+  }
+  return out;
+}
+
+}  // namespace knitc::language
