@@ -35,8 +35,8 @@ constexpr std::array<double, loop_points> crossing = {0.3, 0.5, 0.8, 1.0, 1.0, 0
 
 // A twisted stitch (through the back loop): the lower legs change sides, the one from
 // the left foot passing in front, so the loop is crossed on itself at its base.
-constexpr std::array<double, loop_points> twist_swap = {0.0, 1.0, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0,
-                                                        0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 0.0};
+constexpr std::array<double, loop_points> twist_swap = {0.0, 0.6, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0,
+                                                        0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 0.6, 0.0};
 constexpr std::array<double, loop_points> twist_depth = {0.0, 1.0, 1.0, 1.0, 0.6, 0.2, 0.0, 0.0, 0.0,
                                                          0.0, 0.0, 0.0, -0.2, -0.6, -1.0, -1.0, 0.0};
 
