@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "compile.hpp"
 #include "knit_graph/knit_graph.hpp"
 #include "language/knitspeak.hpp"
 #include "support.hpp"
@@ -152,6 +153,22 @@ TEST(Stitches, IncreasesWorkEveryNewLoopThroughTheOldOne) {
   for (int i = g.course_first[1]; i < g.course_first[2]; ++i) EXPECT_EQ(g.loops[static_cast<std::size_t>(i)].parents.size(), 1u);
 }
 
+// No spelling is shadowed by another stitch's: each finds its own stitch.
+TEST(Stitches, EverySpellingNamesOneStitch) {
+  const auto table = stitch_table();
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    std::vector<std::string> spellings{std::string(table[i].name)};
+    std::string_view rest = table[i].aliases;
+    while (!rest.empty()) {
+      const auto bar = rest.find('|');
+      spellings.emplace_back(rest.substr(0, bar));
+      rest = bar == std::string_view::npos ? std::string_view{} : rest.substr(bar + 1);
+    }
+    for (const auto& w : spellings) EXPECT_EQ(find_stitch(w), static_cast<StitchId>(i)) << w << " of " << table[i].name;
+  }
+  EXPECT_GE(table.size(), 120u);  // the core, the printed vocabulary, the generated crosses
+}
+
 TEST(Stitches, CrossesInBothNotations) {
   EXPECT_EQ(find_stitch("2/2 RC"), find_stitch("C4B"));
   EXPECT_EQ(find_stitch("1/1 lpc"), find_stitch("T2F"));
@@ -218,7 +235,10 @@ TEST(Corpus, EveryPatternCompilesFromItsTranslationAndAsPrinted) {
       const auto printed = runtime::run_pattern(as_printed(name), name + ".lua");
       EXPECT_EQ(wrong, wrong_as_printed.end()) << "compiles, but the source is wrong as printed";
       const Pattern& raw = printed.pattern;
-      EXPECT_NO_THROW(knit_graph::build(raw));
+      // Laid out and traced to the end: every stitch has its geometry.
+      CompileOptions centrelines;
+      centrelines.view = View::centreline;
+      EXPECT_FALSE(compile(raw, centrelines).pieces.empty());
       // The same stitches row by row as the translation (which works the block twice);
       // sm_vine_lace's translation starts on the right side where the source says (WS).
       ASSERT_LE(raw.courses.size(), dsl.courses.size());

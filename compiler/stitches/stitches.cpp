@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cctype>
 #include <deque>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -241,11 +242,16 @@ const StitchDef& stitch(StitchId id) {
 }
 
 std::optional<StitchId> find_stitch(std::string_view word) {
-  const std::string key = lower(word);
-  for (const auto& [spelling, id] : spellings()) {
-    if (spelling == key) return id;
-  }
-  return std::nullopt;
+  // Several hundred spellings, looked up for every word of every row: a map, the first
+  // stitch in table order keeping a spelling two share.
+  static const auto by_spelling = [] {
+    std::map<std::string, StitchId, std::less<>> m;
+    for (const auto& [spelling, id] : spellings()) m.emplace(spelling, id);
+    return m;
+  }();
+  const auto it = by_spelling.find(lower(word));
+  if (it == by_spelling.end()) return std::nullopt;
+  return it->second;
 }
 
 StitchId stitch_id(std::string_view name) {
