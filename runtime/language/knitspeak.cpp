@@ -69,10 +69,12 @@ std::optional<std::vector<int>> numbers(std::string_view text) {
     if (i + 2 < words.size() && (words[i + 1] == "-" || words[i + 1] == "to" || words[i + 1] == "through")) {
       const auto b = number(words[i + 2]);
       if (!b || *b < *a) return std::nullopt;
+      if (out.size() + static_cast<std::size_t>(*b - *a) >= static_cast<std::size_t>(max_row_number)) return std::nullopt;
       for (int n = *a; n <= *b; ++n) out.push_back(n);
       i += 2;
       continue;
     }
+    if (out.size() >= static_cast<std::size_t>(max_row_number)) return std::nullopt;
     out.push_back(*a);
   }
   if (out.empty()) return std::nullopt;
