@@ -25,10 +25,11 @@ constexpr std::array<double, loop_points> head = {0.0, 0.0, 0.1, 0.3, 0.55, 0.8,
                                                   1.0, 1.0, 0.8, 0.55, 0.3, 0.1, 0.0, 0.0};
 constexpr std::array<double, loop_points> legs = {0.0, 0.6, 0.9, 0.8, 0.6, 0.4, 0.2, 0.05, 0.0,
                                                   0.05, 0.2, 0.4, 0.6, 0.8, 0.9, 0.6, 0.0};
-// A crossing loop's feet stay in its parent's head, its own head moves to its new needle
-// position: the whole loop leans, the sinker loops at its feet included.
-constexpr std::array<double, loop_points> feet = {1.0, 1.0, 1.0, 0.9, 0.75, 0.55, 0.35, 0.15, 0.0,
-                                                  0.15, 0.35, 0.55, 0.75, 0.9, 1.0, 1.0, 1.0};
+// A crossing loop's feet stay in its parent's head, its own head (P7..P9, as a whole)
+// moves to its new needle position: the whole loop leans, the sinker loops at its feet
+// included (but see crossed_sinker_gap).
+constexpr std::array<double, loop_points> feet = {1.0, 1.0, 1.0, 0.9, 0.75, 0.55, 0.35, 0.1, 0.0,
+                                                  0.1, 0.35, 0.55, 0.75, 0.9, 1.0, 1.0, 1.0};
 // Where crossing legs pass in front of or behind each other: most at mid-leg.
 constexpr std::array<double, loop_points> crossing = {0.3, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.2, 0.0,
                                                       0.2, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.3};
@@ -39,6 +40,11 @@ constexpr std::array<double, loop_points> twist_swap = {0.0, 0.6, 1.0, 0.5, 0.0,
                                                         0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 0.6, 0.0};
 constexpr std::array<double, loop_points> twist_depth = {0.0, 1.0, 1.0, 1.0, 0.6, 0.2, 0.0, 0.0, 0.0,
                                                          0.0, 0.0, 0.0, -0.2, -0.6, -1.0, -1.0, 0.0};
+
+// Where a crossing loop's neighbour leans otherwise, their sinker points part: each stops
+// this far (of W) short of its full lean, so that two crossed loops' outer sinker points
+// do not meet on one spot (still inside P1, 0.25 W in).
+constexpr double crossed_sinker_gap = 0.15;
 
 // Of a gathered stitch's parents, the one lying on top: k2tog's left stitch (it leans
 // right), ssk's and sk2p's right one (they lean left), the centre of a cdd.
@@ -96,6 +102,7 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
   // Every loop at its needle position by its stitch's template.
   const auto plain = plain_loop(g);
   auto centre_x = [&](int course, int slot) { return out.origin_x[course] + (slot + 0.5) * W; };
+  std::vector<char> purl_column;  // per loop: a tuck knitted off by a purl (set below)
   auto place = [&](Loop& l) {
     const glm::dvec3 origin(out.origin_x[l.course] + l.wale * W, l.course * C, 0.0);
     const double d = pattern.yarns[l.yarn].diameter;
@@ -104,7 +111,13 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
       switch (l.shape) {
         case Template::knit: break;
         case Template::purl: p.z = -p.z; break;
-        case Template::tuck: p.z = -0.35 * p.z - 0.6 * d * head[i]; break;
+        case Template::tuck:
+          // Behind the loop it is held with, on the side the loop that knits both off comes
+          // from (the face's back for a knit, its front for a purl), and a little below its
+          // raised head, so the two heads never lie on one line seen from the face.
+          p.z = (purl_column[static_cast<std::size_t>(&l - out.loops.data())] ? -1.0 : 1.0) * (-0.35 * p.z - 0.6 * d * head[i]);
+          p.y -= 0.2 * d * head[i];
+          break;
         case Template::bind_off:
           p.y *= 0.85;
           p.z *= 0.8;
@@ -123,6 +136,7 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
 
   const std::size_t graph_loops = graph.loops.size();
   out.loops.resize(graph_loops + (bind_off ? graph.live.size() : 0));
+  purl_column.assign(out.loops.size(), 0);
   for (std::size_t i = 0; i < graph_loops; ++i) {
     const knit_graph::Loop& k = graph.loops[i];
     Loop& l = out.loops[i];
@@ -170,7 +184,26 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
       parents[graph_loops + s] = graph.live[s];
     }
   }
+  // A tuck loop is knitted off with the loop it is held with by a later loop: purled
+  // there, the tuck lies on the face's side.
+  for (std::size_t i = 0; i < out.loops.size(); ++i)
+    if (out.loops[i].shape == Template::purl)
+      for (int p : parents[i])
+        if (out.loops[static_cast<std::size_t>(p)].shape == Template::tuck) purl_column[static_cast<std::size_t>(p)] = 1;
   for (Loop& l : out.loops) place(l);
+
+  // How far each cable loop leans (mm, its parent's centre less its own), 0 for others.
+  std::vector<double> lean(out.loops.size(), 0.0);
+  for (std::size_t i = 0; i < out.loops.size(); ++i) {
+    const Loop& l = out.loops[i];
+    if (parents[i].empty() || stitch(l.stitch).family != StitchFamily::cable) continue;
+    const Loop& parent = out.loops[static_cast<std::size_t>(parents[i].front())];
+    lean[i] = centre_x(parent.course, parent.wale) - centre_x(l.course, l.wale);
+  }
+  auto leans_otherwise = [&](std::size_t i, std::size_t j) {  // j: i's neighbour in its course, if any
+    const Loop &a = out.loops[i], &b = out.loops[j];
+    return a.course != b.course || std::abs(a.wale - b.wale) != 1 || std::abs(lean[i] - lean[j]) > 1e-9;
+  };
 
   // Each loop pulled through its parents. A cable's loop leans from its parent's head to
   // its new needle position, passing in front of or behind the loops it crosses. Other
@@ -189,11 +222,17 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
       // In F cables the stitches moving left cross in front, in B those moving right.
       const bool in_front = s.cable.front ? px > cx : px < cx;
       const double dz = std::abs(px - cx) < 0.25 * W ? 0.0 : (in_front ? 0.6 : -0.6) * d;  // a three-part cross's middle stays
-      // Half the way in the child's legs, half in the parent's head: the cross spans two courses.
+      // The whole way in the child's legs: its feet stay in the parent's head, which keeps
+      // its place and only leans toward the side its child passes on. (Half the way in the
+      // parent's head put the crossing parents' heads on one spot, 0.6 d apart in depth:
+      // no room to relax.) The yarn between crossed feet runs behind the block.
       for (int j = 0; j < loop_points; ++j) {
-        child.data_points[j] += glm::dvec3(feet[j] * 0.5 * (px - cx), 0.0, crossing[j] * dz);
-        parent.data_points[j] += head[j] * glm::dvec3(0.5 * (cx - px), 0.0, 0.5 * dz);
+        child.data_points[j] += glm::dvec3(feet[j] * (px - cx), 0.0, crossing[j] * dz);
+        parent.data_points[j] += head[j] * glm::dvec3(0.0, 0.0, 0.5 * dz);
       }
+      const double short_of = (px > cx ? -1.0 : 1.0) * crossed_sinker_gap * W;
+      if (px != cx && (i == 0 || leans_otherwise(i, i - 1))) child.data_points[0].x += short_of;
+      if (px != cx && (i + 1 == out.loops.size() || leans_otherwise(i, i + 1))) child.data_points[loop_points - 1].x += short_of;
       continue;
     }
     double mean = 0.0;

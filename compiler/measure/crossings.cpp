@@ -72,7 +72,9 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
   return out;
 }
 
-CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window) {
+CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window,
+                        std::uint32_t pair_window, double touching) {
+  if (pair_window == 0) pair_window = window;
   CrossingChanges changes;
   auto gap = [](std::uint32_t x, std::uint32_t y) { return x > y ? x - y : y - x; };
   auto less = [](const Crossing& x, const Crossing& y) { return order(x) < order(y); };
@@ -118,18 +120,22 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
     }
   }
   // The unmatched, paired off two by two where the same yarn is in front at both.
-  auto alone = [&](const std::vector<Crossing>& list, const std::vector<char>& skip) {
+  auto alone = [&](const std::vector<Crossing>& list, const std::vector<char>& skip, std::vector<std::size_t>& at) {
     std::vector<char> paired(list.size(), 0);
     std::size_t count = 0;
     for (std::size_t i = 0; i < list.size(); ++i) {
       if (skip[i] || paired[i]) continue;
       std::size_t partner = list.size();
-      near(list, list[i], window, [&](std::size_t j) {
+      near(list, list[i], pair_window, [&](std::size_t j) {
         if (partner == list.size() && j != i && !skip[j] && !paired[j] && (list[j].depth > 0.0) == (list[i].depth > 0.0)) partner = j;
       });
-      if (partner == list.size()) {
+      // A yarn's own kink, two stretches of one piece a few segments apart along it, may
+      // twist out or in alone (Reidemeister's first move).
+      const bool kink = list[i].piece_a == list[i].piece_b && gap(list[i].segment_a, list[i].segment_b) <= pair_window;
+      if (partner == list.size() && !kink) {
         ++count;
-      } else {
+        at.push_back(i);
+      } else if (partner != list.size()) {
         paired[i] = paired[partner] = 1;
       }
     }
@@ -144,8 +150,10 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
     skip_after[j] = matched_after[j];
     changes.found += skip_after[j] ? 0 : 1;
   }
-  changes.lost_alone = alone(before, skip_before);
-  changes.found_alone = alone(after, skip_after);
+  changes.lost_alone = alone(before, skip_before, changes.lost_alone_at);
+  changes.found_alone = alone(after, skip_after, changes.found_alone_at);
+  for (std::size_t i : changes.lost_alone_at) changes.lost_alone_touching += std::abs(before[i].depth) < touching ? 1 : 0;
+  for (std::size_t j : changes.found_alone_at) changes.found_alone_touching += std::abs(after[j].depth) < touching ? 1 : 0;
   return changes;
 }
 

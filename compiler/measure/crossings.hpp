@@ -35,11 +35,20 @@ struct CrossingChanges {
   // together (Reidemeister's second move) with nobody passing through anybody; a lone
   // one cannot.
   std::size_t lost_alone = 0, found_alone = 0;
+  std::vector<std::size_t> lost_alone_at, found_alone_at;  // their indices in before, after
+  // Of those, the ones where the two yarns touched (|depth| below `touching`, mm, as
+  // compare was given it): only there can one have passed through the other. Where they
+  // lay a diameter apart the crossing slid away or in, its partner out of reach.
+  std::size_t lost_alone_touching = 0, found_alone_touching = 0;
 };
 
 // Matches crossings before to crossings after between the same two pieces within
 // `window` segments along each (the pieces' points must correspond, as the relaxation
-// keeps them), one to one, nearest first, and counts what became of them.
-CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window);
+// keeps them), one to one, nearest first, and counts what became of them. The unmatched
+// pair off within `pair_window` segments (0: the same window): two crossings a move of
+// Reidemeister's second kind makes or undoes can lie further apart than one crossing
+// slides, as where a float slides under the legs of two neighbouring loops.
+CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window,
+                        std::uint32_t pair_window = 0, double touching = 0.0);
 
 }  // namespace knitc::measure

@@ -213,7 +213,7 @@ void Contacts::find(const Chains& c) {
             const std::size_t bs = b.segment;
             if (bs <= a) continue;
             if (b.sx == 0 && b.sy == 0 && c.piece[a] == c.piece[bs] &&
-                std::abs(along_mid(c, a) - along_mid(c, bs)) <= 2.0 * (c.radius[a] + c.radius[bs]))
+                std::abs(along_mid(c, a) - along_mid(c, bs)) <= 1.8 * (c.radius[a] + c.radius[bs]))
               continue;
             const glm::dvec3 offset(b.sx * period_.x, b.sy * period_.y, 0.0);
             const glm::dvec3 between = ma - midpoint(c, bs) - offset;
@@ -273,7 +273,7 @@ bool Contacts::stale(const Chains& c) const {
   return false;
 }
 
-double Contacts::push_apart(Chains& c, double skin) {
+double Contacts::push_apart(Chains& c, double skin, double scale) {
   auto push = [&](Pair& p, double& deepest) {
     const std::size_t a = p.a, b = p.b;
     const glm::dvec3 offset = shift(p);
@@ -293,7 +293,7 @@ double Contacts::push_apart(Chains& c, double skin) {
       const std::int8_t before = neighbours_side(p);
       if (before != 0) p.side = before;
     }
-    const double target = reach * (1.0 + skin);
+    const double target = reach * (1.0 + skin) * scale;
     deepest = std::max(deepest, reach - dist);
     if (dist >= target) return;
     const double w[4] = {p.held & 1 ? 0.0 : 1.0 - s, p.held & 2 ? 0.0 : s, p.held & 4 ? 0.0 : 1.0 - t, p.held & 8 ? 0.0 : t};

@@ -31,9 +31,10 @@ class Contacts {
   void find(const Chains& chains);
   // Whether a point has moved half the margin since find(), so a pair may be missing.
   bool stale(const Chains& chains) const;
-  // One sweep: every overlapping pair pushed to its radii plus `skin` (a fraction) apart.
-  // Returns the deepest overlap met (before its push), mm, 0 if none.
-  double push_apart(Chains& chains, double skin);
+  // One sweep: every overlapping pair pushed to its radii plus `skin` (a fraction) apart,
+  // times `scale` (at most 1: a ramp). Returns the deepest overlap met (before its push,
+  // of the full radii), mm, 0 if none.
+  double push_apart(Chains& chains, double skin, double scale = 1.0);
   // The deepest overlap of the pairs, mm, without moving anything.
   double deepest(const Chains& chains) const;
   // The whole fabric was moved by `move` (a change of size): so are the positions the

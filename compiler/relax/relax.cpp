@@ -131,6 +131,18 @@ double polyline_length(const std::vector<glm::dvec3>& p, std::size_t from, std::
   return length;
 }
 
+// The largest relative change of a piece's length from its chain's rest lengths, >= 0.
+double length_change(const Chains& c) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i + 1 < c.first.size(); ++i) {
+    const std::size_t from = c.first[i], to = c.first[i + 1];
+    double rest = 0.0;
+    for (std::size_t k = from; k + 1 < to; ++k) rest += c.rest_length[k];
+    if (rest > 0.0) worst = std::max(worst, std::abs(polyline_length(c.pos, from, to) / rest - 1.0));
+  }
+  return worst;
+}
+
 }  // namespace
 
 Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<double>& diameter,
@@ -158,16 +170,27 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
   contacts.find(c);
   out.stats.start_overlap = contacts.deepest(c) / d;
   const double tolerance = options.tolerance * d;
+  const double closest = std::clamp(1.0 - out.stats.start_overlap, 0.0, 1.0);  // of the radii
   std::vector<glm::dvec3> before;
   int iteration = 0;
   for (; iteration < options.max_iterations; ++iteration) {
     if (contacts.stale(c)) contacts.find(c);
     before = c.pos;
-    const double met = contacts.push_apart(c, contact_skin);
-    // Done when nothing overlaps: the list holds every pair that could, until it is stale.
-    if (met <= tolerance && iteration > 0) {
+    // The contacts' distance ramps up from the layout's closest approach to the yarns'
+    // radii: a first sweep that pushed the interlocks fully apart at once would move
+    // points by half a diameter, enough for a loop to slip out of the one it is pulled
+    // through (seen on stranded colourwork: its parent's head and its feet part sideways).
+    // Held edges keep the swatch's size: there the lengths step undoes partial pushes,
+    // and the ramp would only put off the same full push.
+    const double scale = options.boundary == Boundary::held ? 1.0 : std::min(1.0, closest + (1.0 - closest) * (iteration + 1) / ramp_sweeps);
+    const double met = contacts.push_apart(c, contact_skin, scale);
+    // Done when this sweep's pushes were small (a few tolerances), left nothing
+    // overlapping (the list holds every pair that could, until it is stale) and the yarns
+    // have their lengths back: the other steps would only go on drawing the fabric in.
+    if (met <= settled_pushes * tolerance && iteration > 0 && scale == 1.0) {
       if (contacts.stale(c)) contacts.find(c);
-      if (contacts.deepest(c) <= tolerance) break;
+      // (Held edges keep the swatch's size, so its yarn cannot get its length back.)
+      if (contacts.deepest(c) <= tolerance && (!size.free_height || length_change(c) <= settled_length)) break;
     }
     keep_lengths(c);
     smooth(c, bending_rate);
@@ -179,12 +202,9 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
   out.stats.iterations = iteration;
   out.stats.period = contacts.period();
   out.stats.end_overlap = contacts.deepest(c) / d;
+  out.stats.length_change = length_change(c);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const std::size_t from = c.first[i], to = c.first[i + 1];
-    double before_length = 0.0;
-    for (std::size_t k = from; k + 1 < to; ++k) before_length += c.rest_length[k];
-    const double after = polyline_length(c.pos, from, to);
-    if (before_length > 0.0) out.stats.length_change = std::max(out.stats.length_change, std::abs(after / before_length - 1.0));
     std::copy(c.pos.begin() + static_cast<std::ptrdiff_t>(from), c.pos.begin() + static_cast<std::ptrdiff_t>(to),
               pieces[i].data_points.begin());
   }

@@ -46,11 +46,14 @@ struct Options {
 };
 
 // The constants of the method, in diameters or tube radii.
-inline constexpr double contact_skin = 0.04;         // capsules are pushed to (1 + skin) (r_a + r_b) apart
+inline constexpr double contact_skin = 0.06;         // capsules are pushed to (1 + skin) (r_a + r_b) apart
 inline constexpr double contact_margin = 0.5;        // contact pairs are listed up to this many d apart
 inline constexpr double bending_rate = 0.1;          // the smoothing step's rate
 inline constexpr double tightest_bend_radii = 1.2;   // no chain bends tighter than this many tube radii
-inline constexpr double size_gain = 64.0;            // the size boost per loop across (see relax.cpp)
+inline constexpr double size_gain = 1024.0;          // the size boost per loop across (see relax.cpp)
+inline constexpr int ramp_sweeps = 10;               // the contact distance reaches the radii over this many sweeps
+inline constexpr double settled_pushes = 3.0;        // done once no push is deeper than this many tolerances
+inline constexpr double settled_length = 0.015;      // and no piece's length is further than this fraction off
 
 struct Stats {
   int iterations = 0;
