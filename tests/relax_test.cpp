@@ -147,7 +147,7 @@ TEST(Relax, HeldEdgesStayPut) {
   EXPECT_LE(out.stats.end_overlap, 0.02) << out.stats.iterations << " sweeps";
 }
 
-TEST(Relax, PeriodicSwatchClearsContactsAcrossItsEdges) {
+TEST(Relax, PeriodicSwatchClearsContactsAcrossItsEdgesAndDrawsIn) {
   const auto [layout, chains, out] = relaxed_jersey(8, 8, relax::Boundary::periodic);
   EXPECT_GT(out.stats.start_overlap, 0.5);
   EXPECT_LE(out.stats.end_overlap, relax::Options{}.tolerance + 1e-9);
@@ -168,6 +168,20 @@ TEST(Relax, PeriodicSwatchClearsContactsAcrossItsEdges) {
   // Across the repeat's edge the loops are as far apart as in the middle.
   ASSERT_GT(out.stats.period.x, 0.0);
   EXPECT_NEAR(std::abs(first.x + out.stats.period.x - last.x), std::abs(next.x - middle.x), 0.05 * std::abs(next.x - middle.x));
+  // And up: the cast-on stands one repeat above the last course as a course above its
+  // neighbour; the repeat drew in as a swatch does (the layout's courses are 3.61 mm apart,
+  // a relaxed jersey swatch's about 2.95), its width kept.
+  auto course_y = [&](int k) {
+    double y = 0.0;
+    for (int w = 0; w < 8; ++w) y += centre(static_cast<std::size_t>(8 * k + w)).y;
+    return y / 8.0;
+  };
+  const int courses = static_cast<int>(layout.courses);
+  ASSERT_GT(out.stats.period.y, 0.0);
+  const double inner = course_y(5) - course_y(4), seam = course_y(0) + out.stats.period.y - course_y(courses - 1);
+  EXPECT_NEAR(seam, inner, 0.1 * inner);
+  EXPECT_NEAR(out.stats.period.y / courses, 2.95, 0.3);
+  EXPECT_NEAR(out.stats.period.x / 8.0, 4.0, 0.2);
 }
 
 TEST(Relax, OffLeavesTheLayoutAsItIs) {

@@ -273,8 +273,8 @@ bool Contacts::stale(const Chains& c) const {
   return false;
 }
 
-double Contacts::push_apart(Chains& c, double skin, double scale) {
-  auto push = [&](Pair& p, double& deepest) {
+double Contacts::push_apart(Chains& c, double skin, double scale, Strain* strain) {
+  auto push = [&](Pair& p, double& deepest, Strain& asked) {
     const std::size_t a = p.a, b = p.b;
     const glm::dvec3 offset = shift(p);
     const double reach = p.reach;
@@ -300,6 +300,7 @@ double Contacts::push_apart(Chains& c, double skin, double scale) {
     const double sum = (1.0 - s) * w[0] + s * w[1] + (1.0 - t) * w[2] + t * w[3];
     if (sum > 0.0) {
       const double lambda = (target - dist) / sum;
+      if (strain) asked.add((target - dist) * normal, std::max(dist, 0.0) * normal);
       c.pos[a] += lambda * w[0] * normal;
       c.pos[a + 1] += lambda * w[1] * normal;
       c.pos[b] -= lambda * w[2] * normal;
@@ -308,18 +309,26 @@ double Contacts::push_apart(Chains& c, double skin, double scale) {
   };
   const std::size_t strips = strip_first_.size() - 1;
   std::vector<double> per_strip(strips, 0.0);
+  std::vector<Strain> strain_per_strip(strain ? strips : 0);
   for (std::size_t colour = 0; colour < 4; ++colour) {
     const std::size_t count = strips > colour ? (strips - colour + 3) / 4 : 0;
     parallel_for(count, threads_, [&](std::size_t j) {
       const std::size_t k = colour + 4 * j;
-      double deepest = 0.0;  // a local: neighbouring strips' slots share a cache line
-      for (std::size_t i = strip_first_[k]; i < strip_first_[k + 1]; ++i) push(pairs_[i], deepest);
+      double deepest = 0.0;  // locals: neighbouring strips' slots share a cache line
+      Strain asked;
+      for (std::size_t i = strip_first_[k]; i < strip_first_[k + 1]; ++i) push(pairs_[i], deepest, asked);
       per_strip[k] = deepest;
+      if (strain) strain_per_strip[k] = asked;
     });
   }
   double deepest = 0.0;
-  for (std::size_t i = across_first_; i < pairs_.size(); ++i) push(pairs_[i], deepest);
+  Strain asked;
+  for (std::size_t i = across_first_; i < pairs_.size(); ++i) push(pairs_[i], deepest, asked);
   for (double d : per_strip) deepest = std::max(deepest, d);
+  if (strain) {  // summed in strip order: the same for any thread count
+    for (const Strain& s : strain_per_strip) strain->add(s);
+    strain->add(asked);
+  }
   return deepest;
 }
 

@@ -18,6 +18,21 @@
 
 namespace knitc::relax {
 
+// How much a sweep's constraints would stretch the fabric, per axis (x, y): the sum of
+// each correction's change of a pair's separation times that separation, and the sum of
+// the separations squared. Their ratio is the mean strain asked for: > 0, wider.
+struct Strain {
+  glm::dvec2 stretch{0.0}, lever{0.0};
+  void add(const glm::dvec3& change, const glm::dvec3& separation) {
+    stretch += glm::dvec2(change) * glm::dvec2(separation);
+    lever += glm::dvec2(separation) * glm::dvec2(separation);
+  }
+  void add(const Strain& o) {
+    stretch += o.stretch;
+    lever += o.lever;
+  }
+};
+
 class Contacts {
  public:
   // period: the swatch's repeat in x and y, mm (0: not periodic that way). margin, mm.
@@ -34,7 +49,7 @@ class Contacts {
   // One sweep: every overlapping pair pushed to its radii plus `skin` (a fraction) apart,
   // times `scale` (at most 1: a ramp). Returns the deepest overlap met (before its push,
   // of the full radii), mm, 0 if none.
-  double push_apart(Chains& chains, double skin, double scale = 1.0);
+  double push_apart(Chains& chains, double skin, double scale = 1.0, Strain* strain = nullptr);
   // The deepest overlap of the pairs, mm, without moving anything.
   double deepest(const Chains& chains) const;
   // The whole fabric was moved by `move` (a change of size): so are the positions the

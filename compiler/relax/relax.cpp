@@ -19,7 +19,7 @@ namespace {
 
 // Every segment back to its length: a sweep up the chains, then one down, so a
 // correction travels the whole yarn in one call rather than a segment per call.
-void keep_lengths(Chains& c) {
+void keep_lengths(Chains& c, Strain* strain = nullptr) {
   auto keep = [&](std::size_t i) {
     if (!c.segment[i]) return;
     const double wa = c.inv_mass[i], wb = c.inv_mass[i + 1];
@@ -27,6 +27,7 @@ void keep_lengths(Chains& c) {
     glm::dvec3 d = c.pos[i + 1] - c.pos[i];
     const double length = glm::length(d);
     if (length < 1e-12) return;
+    if (strain) strain->add(-(length - c.rest_length[i]) / length * d, d);
     d *= (length - c.rest_length[i]) / (length * (wa + wb));
     c.pos[i] += wa * d;
     c.pos[i + 1] -= wb * d;
@@ -87,10 +88,13 @@ void limit_bends(Chains& c, double radii) {
 struct Size {
   bool round = false;
   bool free_width = true, free_height = true;
+  // A periodic axis has no edges to draw in from: its size follows the strain the sweep's
+  // contacts and lengths asked for (pressure against tension), not the motion.
+  bool periodic_width = false, periodic_height = false;
   glm::dvec2 boost{0.0};
 };
 
-void boost_size(Chains& c, const std::vector<glm::dvec3>& before, const Size& size, Contacts& contacts) {
+void boost_size(Chains& c, const std::vector<glm::dvec3>& before, const Size& size, const Strain& asked, Contacts& contacts) {
   glm::dvec2 lo(1e300), hi(-1e300);
   for (const auto& p : c.pos) {
     lo = glm::min(lo, glm::dvec2(p));
@@ -108,8 +112,10 @@ void boost_size(Chains& c, const std::vector<glm::dvec3>& before, const Size& si
     hn += (c.pos[i].y - before[i].y) * h;
     hd += h * h;
   }
-  const double grow_w = size.free_width && wd > 0.0 ? std::clamp(size.boost.x * wn / wd, -0.01, 0.01) : 0.0;
-  const double grow_h = size.free_height && hd > 0.0 ? std::clamp(size.boost.y * hn / hd, -0.01, 0.01) : 0.0;
+  double grow_w = size.free_width && wd > 0.0 ? std::clamp(size.boost.x * wn / wd, -0.01, 0.01) : 0.0;
+  double grow_h = size.free_height && hd > 0.0 ? std::clamp(size.boost.y * hn / hd, -0.01, 0.01) : 0.0;
+  if (size.periodic_width) grow_w = asked.lever.x > 0.0 ? std::clamp(asked.stretch.x / asked.lever.x, -0.01, 0.01) : 0.0;
+  if (size.periodic_height) grow_h = asked.lever.y > 0.0 ? std::clamp(asked.stretch.y / asked.lever.y, -0.01, 0.01) : 0.0;
   if (grow_w == 0.0 && grow_h == 0.0) return;
   auto move = [&](glm::dvec3& p) {
     if (size.round) {
@@ -156,14 +162,18 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
   }
   glm::dvec2 period(0.0);
   if (options.boundary == Boundary::periodic) {
-    if (layout.knitting == Knitting::flat) period.x = layout.wales * layout.loop_width;
-    // Not in y: the courses draw in as the yarns part, which a fixed repeat forbids and
-    // nothing yet finds for an endless fabric (see docs/relaxation.md).
+    // Flat work: across, one loop width a wale; up, one course spacing a course, so the
+    // cast-on's loops stand in (one repeat up) for the children of the last course's. The
+    // repeat's size follows the strain its constraints ask for (see Size).
+    if (layout.knitting == Knitting::flat)
+      period = glm::dvec2(layout.wales * layout.loop_width, layout.courses * layout.course_spacing);
   }
   Contacts contacts(period, contact_margin * d, layout.knitting == Knitting::round, thread_count(options.threads));
   Size size;
   size.round = layout.knitting == Knitting::round;
   size.free_width = size.free_height = options.boundary != Boundary::held;
+  size.periodic_width = period.x > 0.0;
+  size.periodic_height = period.y > 0.0;
   // About the number of loops between the swatch's middle and its edges, times a gain.
   size.boost = size_gain * glm::dvec2(layout.wales, layout.courses);
 
@@ -183,7 +193,8 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
     // Held edges keep the swatch's size: there the lengths step undoes partial pushes,
     // and the ramp would only put off the same full push.
     const double scale = options.boundary == Boundary::held ? 1.0 : std::min(1.0, closest + (1.0 - closest) * (iteration + 1) / ramp_sweeps);
-    const double met = contacts.push_apart(c, contact_skin, scale);
+    Strain asked;
+    const double met = contacts.push_apart(c, contact_skin, scale, &asked);
     // Done when this sweep's pushes were small (a few tolerances), left nothing
     // overlapping (the list holds every pair that could, until it is stale) and the yarns
     // have their lengths back: the other steps would only go on drawing the fabric in.
@@ -192,11 +203,11 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
       // (Held edges keep the swatch's size, so its yarn cannot get its length back.)
       if (contacts.deepest(c) <= tolerance && (!size.free_height || length_change(c) <= settled_length)) break;
     }
-    keep_lengths(c);
+    keep_lengths(c, &asked);
     smooth(c, bending_rate);
     limit_bends(c, tightest_bend_radii);
-    keep_lengths(c);
-    boost_size(c, before, size, contacts);
+    keep_lengths(c, &asked);
+    boost_size(c, before, size, asked, contacts);
   }
   if (contacts.stale(c)) contacts.find(c);
   out.stats.iterations = iteration;

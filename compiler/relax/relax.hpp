@@ -32,9 +32,9 @@ namespace knitc::relax {
 enum class Boundary {
   free,      // a swatch: every edge free to move
   held,      // the cast-on and the last course held where the layout put them
-  periodic,  // one repeat of a fabric endless across: contacts wrap from one selvedge to
-             // the other (flat work), one loop width per wale; the turns and tails at the
-             // selvedges take no part. Not yet periodic in y (the courses must draw in).
+  periodic,  // one repeat of a fabric endless across and up (flat work): contacts wrap from
+             // one selvedge to the other, one loop width per wale, and from the last course to
+             // the cast-on, one course spacing per course; the turns and tails take no part
 };
 
 struct Options {
