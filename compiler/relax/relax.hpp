@@ -46,7 +46,7 @@ struct Options {
 };
 
 // The constants of the method, in diameters or tube radii.
-inline constexpr double contact_skin = 0.06;         // capsules are pushed to (1 + skin) (r_a + r_b) apart
+inline constexpr double contact_skin = 0.08;         // capsules are pushed to (1 + skin) (r_a + r_b) apart
 inline constexpr double contact_margin = 0.5;        // contact pairs are listed up to this many d apart
 inline constexpr double bending_rate = 0.1;          // the smoothing step's rate
 inline constexpr double tightest_bend_radii = 1.2;   // no chain bends tighter than this many tube radii
