@@ -42,7 +42,8 @@ class Contacts {
       : period_(period), margin_(margin), round_(round), threads_(threads) {}
 
   // Finds every pair of contactable segments whose capsules are less than the margin apart:
-  // of different pieces, or of one piece more than two diameters apart along it.
+  // of different pieces, or of one piece more than 1.8 diameters apart along it (a little
+  // inside the two of measure::deepest_penetration, so that every pair it counts is kept apart).
   void find(const Chains& chains);
   // Whether a point has moved half the margin since find(), so a pair may be missing.
   bool stale(const Chains& chains) const;

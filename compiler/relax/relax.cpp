@@ -192,9 +192,11 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
     // through (seen on stranded colourwork: its parent's head and its feet part sideways).
     // Held edges keep the swatch's size: there the lengths step undoes partial pushes,
     // and the ramp would only put off the same full push.
-    const double scale = options.boundary == Boundary::held ? 1.0 : std::min(1.0, closest + (1.0 - closest) * (iteration + 1) / ramp_sweeps);
-    Strain asked;
-    const double met = contacts.push_apart(c, contact_skin, scale, &asked);
+    const double scale =
+        options.boundary == Boundary::held ? 1.0 : std::min(1.0, closest + (1.0 - closest) * (iteration + 1) / ramp_sweeps);
+    Strain asked;  // only a periodic repeat's size needs it
+    Strain* strain = size.periodic_width || size.periodic_height ? &asked : nullptr;
+    const double met = contacts.push_apart(c, contact_skin, scale, strain);
     // Done when this sweep's pushes were small (a few tolerances), left nothing
     // overlapping (the list holds every pair that could, until it is stale) and the yarns
     // have their lengths back: the other steps would only go on drawing the fabric in.
@@ -203,10 +205,10 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
       // (Held edges keep the swatch's size, so its yarn cannot get its length back.)
       if (contacts.deepest(c) <= tolerance && (!size.free_height || length_change(c) <= settled_length)) break;
     }
-    keep_lengths(c, &asked);
+    keep_lengths(c, strain);
     smooth(c, bending_rate);
     limit_bends(c, tightest_bend_radii);
-    keep_lengths(c, &asked);
+    keep_lengths(c, strain);
     boost_size(c, before, size, asked, contacts);
   }
   if (contacts.stale(c)) contacts.find(c);

@@ -6,18 +6,20 @@
 // consecutive points are about 0.7 diameters apart) and the chains' segments are
 // capsules of the yarn's radius. Position-based dynamics (Muller et al. 2007), in a
 // fixed order so the result is the same on any machine and for any thread count:
-//   - contact: two segments of different pieces, or of one piece more than two
-//     diameters apart along it, end at least r_a + r_b apart (plus a 4% skin, so the
-//     smooth curve through the chain clears too); where two cross seen from the face,
-//     the one in front stays in front (flat work);
+//   - contact: two segments of different pieces, or of one piece more than 1.8
+//     diameters apart along it, end at least r_a + r_b apart (plus an 8% skin, so the
+//     smooth curve through the chain clears too), reached over the first sweeps (a
+//     ramp); where two cross seen from the face, the one in front stays in front (flat
+//     work);
 //   - length: every segment keeps its length;
 //   - bending: the displacement from the layout is smoothed along the yarn, so a push at
 //     a contact bends the yarn over a few diameters instead of kinking it; no bend
 //     tighter than 1.2 tube radii;
-//   - size: the swatch's change of width and height, sped up (see relax.cpp).
+//   - size: the swatch's change of width and height, sped up; a periodic repeat's from
+//     the strain its constraints ask for (see relax.cpp).
 // The contacts are found with a grid of cells about two diameters wide, rebuilt when some
 // point has moved a quarter diameter: each sweep's time and memory grow linearly with the
-// fabric (the number of sweeps does not yet: docs/relaxation.md).
+// fabric, and the sweeps hardly grow with it (docs/relaxation.md).
 #pragma once
 
 #include <vector>
