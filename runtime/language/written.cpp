@@ -8,8 +8,6 @@ namespace knitc::language {
 
 namespace {
 
-constexpr int max_count = 100'000;
-
 enum class Kind { word, star, comma, semicolon, open, close, end };
 
 struct Token {
@@ -419,22 +417,6 @@ class Parser {
   std::optional<TextError> error_;
 };
 
-void flatten(const Sequence& seq, std::vector<Worked>& out, std::size_t limit) {
-  for (const Element& e : seq) {
-    for (int i = 0; i < e.count && out.size() <= limit; ++i) {
-      if (e.is_group) flatten(e.body, out, limit);
-      else out.push_back(e.stitch);
-    }
-  }
-}
-
-std::string stitches(int n) { return std::to_string(n) + (n == 1 ? " stitch" : " stitches"); }
-std::string sts(int n) { return std::to_string(n) + (n == 1 ? " st" : " sts"); }
-
-std::string over_or_short(int left) {
-  return left > 0 ? std::to_string(left) + " left over" : std::to_string(-left) + " missing";
-}
-
 }  // namespace
 
 std::string quote_row(std::string_view text) {
@@ -445,122 +427,6 @@ std::string quote_row(std::string_view text) {
 
 std::variant<RowText, TextError> parse_row(std::string_view text, std::span<const std::string> yarn_ids) {
   return Parser(text, yarn_ids).row();
-}
-
-int consumed(std::span<const Worked> worked) {
-  int n = 0;
-  for (const Worked& w : worked) n += stitch(w.stitch).consumes;
-  return n;
-}
-
-namespace {
-
-// When a row runs out of stitches partway through a stitch that works several (a
-// decrease or a cable at the edge), the message names that stitch.
-std::optional<std::string> edge_shortfall(std::span<const Worked> worked, int live) {
-  int used = 0;
-  for (const Worked& w : worked) {
-    const StitchDef& s = stitch(w.stitch);
-    if (used + s.consumes > live) {
-      const int left = live - used;
-      if (s.consumes < 2 || left <= 0) return std::nullopt;
-      if (s.family == StitchFamily::cable && used == 0)
-        return std::string(s.name) + " needs " + stitches(s.consumes) + " but only " + std::to_string(live) +
-               " are live; a cable cannot be wider than the fabric";
-      return std::string(s.name) + " at the edge has no neighbour to work with: it needs " + stitches(s.consumes) +
-             " but " + (left == 1 ? "1 is" : std::to_string(left) + " are") + " left; move it in from the edge";
-    }
-    used += s.consumes;
-  }
-  return std::nullopt;
-}
-
-}  // namespace
-
-std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::string_view source, int live, int row) {
-  // A row can never need more stitches than the limit of live ones; stop flattening there.
-  const std::size_t limit = static_cast<std::size_t>(max_count) * 3;
-  std::vector<Worked> before, star, after;
-  flatten(text.before, before, limit);
-  if (text.star) flatten(*text.star, star, limit);
-  flatten(text.after, after, limit);
-  const std::string name = "row " + std::to_string(row) + " " + quote_row(source);
-  if (before.size() > limit || star.size() > limit || after.size() > limit)
-    return TextError{name + " is longer than any row can be"};
-
-  if (!text.star) {
-    const int unit = consumed(before);
-    if (unit == 0) {
-      if (live == 0) return before;
-      return TextError{name + " works none of the " + std::to_string(live) + " live stitches; give stitches such as \"k\""};
-    }
-    if (unit > live) {
-      if (auto edge = edge_shortfall(before, live)) return TextError{name + ": " + *edge};
-      return TextError{name + " uses " + stitches(unit) + " but " + std::to_string(live) + " are live (" +
-                       over_or_short(live - unit) + "); remove " + stitches(unit - live) + " or change the repeat"};
-    }
-    if (live % unit != 0 && 2 * unit > live)  // it fits once at most: a fixed row, short
-      return TextError{name + " uses " + stitches(unit) + " but " + std::to_string(live) + " are live (" +
-                       over_or_short(live - unit) + "); add " + stitches(live - unit) + " or change the repeat"};
-    if (live % unit != 0)
-      return TextError{name + " repeats every " + stitches(unit) + " and does not fit " + std::to_string(live) +
-                       " live stitches (" + over_or_short(live % unit) + "); make the count a multiple of " +
-                       std::to_string(unit) + " or end the row with fixed stitches (*...; rep from * to last " +
-                       sts(live % unit) + ", ...)"};
-    if (before.size() * static_cast<std::size_t>(live / unit) > limit) return TextError{name + " makes more stitches than any row can hold"};
-    std::vector<Worked> out;
-    out.reserve(before.size() * (live / unit));
-    for (int i = 0; i < live / unit; ++i) out.insert(out.end(), before.begin(), before.end());
-    return out;
-  }
-
-  const int a = consumed(before), b = consumed(star), s = consumed(after);
-  if (text.to_last && *text.to_last != s)
-    return TextError{name + " repeats to the last " + stitches(*text.to_last) + " but " + stitches(s) +
-                     " follow the repeat; make the two agree"};
-  if (b == 0) return TextError{name + ": the *repeat works no stitches"};
-  const int room = live - a - s;
-  if (room < b) {
-    std::vector<Worked> once(before);
-    once.insert(once.end(), star.begin(), star.end());
-    once.insert(once.end(), after.begin(), after.end());
-    if (auto edge = edge_shortfall(once, live)) return TextError{name + ": " + *edge};
-    return TextError{name + " needs at least " + stitches(a + b + s) + " for one repeat but " + std::to_string(live) +
-                     " are live (" + over_or_short(room - b) + "); add stitches or shorten the repeat"};
-  }
-  if (room % b != 0 && a == 0 && s == 0)
-    return TextError{name + " repeats every " + stitches(b) + " and does not fit " + std::to_string(live) +
-                     " live stitches (" + over_or_short(room % b) + "); make the count a multiple of " + std::to_string(b)};
-  if (room % b != 0)
-    return TextError{name + ": the *repeat of " + stitches(b) + " does not fit the " + std::to_string(room) +
-                     " stitches between the fixed ones (" + over_or_short(room % b) +
-                     "); change the repeat or the fixed stitches"};
-  if (before.size() + after.size() + star.size() * static_cast<std::size_t>(room / b) > limit)
-    return TextError{name + " makes more stitches than any row can hold"};
-  std::vector<Worked> out(before);
-  for (int i = 0; i < room / b; ++i) out.insert(out.end(), star.begin(), star.end());
-  out.insert(out.end(), after.begin(), after.end());
-  return out;
-}
-
-std::variant<std::vector<Op>, TextError> face_view(std::span<const Worked> worked, Side side, int yarn) {
-  std::vector<Op> ops;
-  ops.reserve(worked.size());
-  for (const Worked& w : worked) {
-    Op op{w.stitch, w.yarn < 0 ? yarn : w.yarn};
-    if (side == Side::wrong) {
-      const auto face = wrong_side_face(w.stitch);
-      if (!face)
-        return TextError{std::string(stitch(w.stitch).name) +
-                         " has no wrong-side form; work it on a right-side row"};
-      op.stitch = *face;
-    }
-    ops.push_back(op);
-  }
-  // Right-side rows are worked from the right edge: the first stitch worked is the last
-  // in face order.
-  if (side == Side::right) std::reverse(ops.begin(), ops.end());
-  return ops;
 }
 
 }  // namespace knitc::language

@@ -24,6 +24,9 @@
 
 namespace knitc::language {
 
+// The largest count a text may give a stitch or group (k100000, (k, p) x100000).
+inline constexpr int max_count = 100'000;
+
 // A problem in a text, without its location (the caller knows the file and line).
 struct TextError {
   std::string message;
