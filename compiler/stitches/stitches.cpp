@@ -102,14 +102,14 @@ constexpr StitchDef with(StitchDef d, bool twisted, bool below) {
 // After the core: the rest of the vocabulary knitters print. Ids are indices, so new
 // stitches go at the end.
 constexpr auto more = std::to_array<StitchDef>({
-    with(plain("k tbl", "ktbl|k through back loop|k-b|kb", "k_tbl", "k_tbl", 1, 1, true, F::knit, Lean::none, "p tbl",
+    with(plain("k tbl", "ktbl|k through back loop|k tw|k twisted", "k_tbl", "k_tbl", 1, 1, true, F::knit, Lean::none, "p tbl",
                "knit through the back loop: a twisted knit, its legs crossed at the foot"), true, false),
-    with(plain("p tbl", "ptbl|p through back loop|p-b|pb", "p_tbl", "p_tbl", 1, 1, true, F::purl, Lean::none, "k tbl",
+    with(plain("p tbl", "ptbl|p through back loop|p tw|p twisted", "p_tbl", "p_tbl", 1, 1, true, F::purl, Lean::none, "k tbl",
                "purl through the back loop: a twisted purl"), true, false),
-    with(plain("k below", "k-b1|kb1|k in row below|k in st below", "k_below", "k_below", 1, 1, true, F::knit, Lean::none,
+    with(plain("k below", "k b|kb1|k-b1|k in row below|k in st below|k in stitch below", "k_below", "k_below", 1, 1, true, F::knit, Lean::none,
                "p below", "knit into the stitch below (brioche): the live loop drops and lies on the new one like a tuck"),
          false, true),
-    with(plain("p below", "p-b1|pb1|p in row below|p in st below", "p_below", "p_below", 1, 1, true, F::purl, Lean::none,
+    with(plain("p below", "p b|pb1|p-b1|p in row below|p in st below|p in stitch below", "p_below", "p_below", 1, 1, true, F::purl, Lean::none,
                "k below", "purl into the stitch below (brioche): the live loop drops and lies on the new one like a tuck"),
          false, true),
     plain("sssk", "", "sssk", "sssk", 3, 1, false, F::decrease, Lean::left, "",
