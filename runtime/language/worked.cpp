@@ -64,6 +64,7 @@ std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::
   if (text.star) flatten(*text.star, star, limit);
   flatten(text.after, after, limit);
   const std::string name = "row " + std::to_string(row) + " " + quote_row(source);
+  if (text.as_they_appear) return TextError{name + " works each stitch as it shows: that takes the stitches below, not the text"};
   if (before.size() > limit || star.size() > limit || after.size() > limit)
     return TextError{name + " is longer than any row can be"};
 

@@ -64,6 +64,7 @@ std::variant<RowText, TextError> parse_row(std::string_view text, std::span<cons
 
 // Works a parsed row across `live` stitches, in working order: a text without a repeat
 // is repeated until the stitches are used; a *repeat fills what the fixed stitches leave.
+// A text worked as its stitches appear is an error here: the caller knows how they show.
 // `row` is the row's number, for messages.
 std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::string_view source, int live, int row);
 

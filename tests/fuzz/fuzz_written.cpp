@@ -66,6 +66,11 @@ void run(std::string_view text, int live) {
     check_sequence(*row.star, yarns, 0);
   }
   check_sequence(row.after, yarns, 0);
+  if (row.as_they_appear) {  // "knit the knit sts and purl the purl sts": no stitches of its own
+    check(row.before.empty() && !row.star && row.after.empty(), "a row worked as it appears also lists stitches");
+    check(work_row(row, text, live, 1).index() == 1, "work_row worked a row as it appears without the stitches below");
+    return;
+  }
   check(!row.before.empty() || row.star || !row.after.empty(), "a row with no stitches was accepted");
 
   const auto result = work_row(row, text, live, 1);
