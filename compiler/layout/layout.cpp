@@ -218,21 +218,22 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
     const double cx = centre_x(child.course, child.wale);
     if (s.family == StitchFamily::cable) {
       Loop& parent = out.loops[parents[i].front()];
-      const double px = centre_x(parent.course, parent.wale);
-      // In F cables the stitches moving left cross in front, in B those moving right.
-      const bool in_front = s.cable.front ? px > cx : px < cx;
-      const double dz = std::abs(px - cx) < 0.25 * W ? 0.0 : (in_front ? 0.6 : -0.6) * d;  // a three-part cross's middle stays
+      // In F cables the stitches moving left cross in front, in B those moving right; a
+      // three-part cross's middle stays where it is.
+      const bool travels = std::abs(lean[i]) >= 0.25 * W;
+      const bool in_front = s.cable.front ? lean[i] > 0.0 : lean[i] < 0.0;
+      const double dz = travels ? (in_front ? 0.6 : -0.6) * d : 0.0;
       // The whole way in the child's legs: its feet stay in the parent's head, which keeps
       // its place and only leans toward the side its child passes on. (Half the way in the
       // parent's head put the crossing parents' heads on one spot, 0.6 d apart in depth:
       // no room to relax.) The yarn between crossed feet runs behind the block.
       for (int j = 0; j < loop_points; ++j) {
-        child.data_points[j] += glm::dvec3(feet[j] * (px - cx), 0.0, crossing[j] * dz);
+        child.data_points[j] += glm::dvec3(feet[j] * lean[i], 0.0, crossing[j] * dz);
         parent.data_points[j] += head[j] * glm::dvec3(0.0, 0.0, 0.5 * dz);
       }
-      const double short_of = (px > cx ? -1.0 : 1.0) * crossed_sinker_gap * W;
-      if (px != cx && (i == 0 || leans_otherwise(i, i - 1))) child.data_points[0].x += short_of;
-      if (px != cx && (i + 1 == out.loops.size() || leans_otherwise(i, i + 1))) child.data_points[loop_points - 1].x += short_of;
+      const double short_of = (lean[i] > 0.0 ? -1.0 : 1.0) * crossed_sinker_gap * W;
+      if (travels && (i == 0 || leans_otherwise(i, i - 1))) child.data_points[0].x += short_of;
+      if (travels && (i + 1 == out.loops.size() || leans_otherwise(i, i + 1))) child.data_points[loop_points - 1].x += short_of;
       continue;
     }
     double mean = 0.0;

@@ -13,12 +13,6 @@ namespace {
 
 constexpr int max_row_number = 100'000;
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
-  return out;
-}
-
 std::string_view trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
@@ -175,9 +169,9 @@ std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, st
   int next_number = 0;                 // the next numbered row to work; 0 until the first
   std::optional<KnitspeakNote> error;
 
-  auto emit = [&](int number, const Given& g, int line) {
+  auto emit = [&](int number, const Given& g) {
     KnitspeakRow r;
-    r.line = line;
+    r.line = g.line;
     r.number = number;
     r.side = g.side;
     r.stitches_after = g.count;
@@ -202,7 +196,7 @@ std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, st
   auto flush = [&] {
     if (next_number == 0 && !given.empty()) next_number = given.begin()->first;
     for (auto it = given.find(next_number); it != given.end() && !error; it = given.find(next_number)) {
-      emit(next_number, it->second, it->second.line);
+      emit(next_number, it->second);
       given.erase(it);
       ++next_number;
     }

@@ -43,12 +43,6 @@ std::vector<Token> tokenize(std::string_view s) {
   return out;
 }
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
-  return out;
-}
-
 std::optional<int> whole(std::string_view s) {
   int v = 0;
   if (s.empty() || s.size() > 6) return std::nullopt;
@@ -314,8 +308,8 @@ class Parser {
     }
     // "sl1, k2tog, psso": passing the slipped stitch over makes the two one stitch.
     if (words.size() == 1 && (lower(words[0]) == "psso" || lower(words[0]) == "pass slipped stitch over")) return pass_over(seq);
-    // "k1tbl": a count run into the next word.
-    std::string spaced;
+    // "k1tbl": a count run into the next word, split there (views into the same text).
+    std::vector<std::string_view> split;
     if (!find_stitch(join(words))) {
       const std::string_view w = words[0];
       std::size_t i = 0;
@@ -323,19 +317,10 @@ class Parser {
       std::size_t j = i;
       while (j < w.size() && std::isdigit(static_cast<unsigned char>(w[j]))) ++j;
       if (i > 0 && j > i && j < w.size() && std::isalpha(static_cast<unsigned char>(w[j]))) {
-        spaced = std::string(w.substr(0, j)) + " " + std::string(w.substr(j));
-        for (std::size_t k = 1; k < words.size(); ++k) spaced += " " + std::string(words[k]);
+        split = {w.substr(0, j), w.substr(j)};
+        split.insert(split.end(), words.begin() + 1, words.end());
+        words = split;
       }
-    }
-    std::vector<std::string_view> respaced;
-    if (!spaced.empty()) {
-      for (std::size_t a = 0; a < spaced.size();) {
-        const std::size_t b = spaced.find(' ', a);
-        respaced.push_back(std::string_view(spaced).substr(a, b == std::string::npos ? std::string::npos : b - a));
-        if (b == std::string::npos) break;
-        a = b + 1;
-      }
-      words = respaced;
     }
     // The whole text as a name first ("k2tog", "sl1-k2tog-psso", "no stitch").
     std::optional<StitchId> id = find_stitch(join(words));
@@ -418,6 +403,12 @@ class Parser {
 };
 
 }  // namespace
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
+  return out;
+}
 
 std::string quote_row(std::string_view text) {
   constexpr std::size_t longest = 60;
