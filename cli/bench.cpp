@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <fmt/core.h>
+#include <stdlib.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -53,7 +54,17 @@ int bench(int wales, int courses, const CompileOptions& options, bool header) {
   const auto t1 = Clock::now();
   Fabric fabric = compile(pattern, options);
   const double mesh = seconds_since(t1);
-  const auto path = std::filesystem::temp_directory_path() / fmt::format("knitc-bench-{}.glb", ::getpid());
+  // A folder of its own (mkdtemp: a name nobody can plant a link at) for the one file.
+  std::string folder = (std::filesystem::temp_directory_path() / "knitc-bench-XXXXXX").string();
+  if (::mkdtemp(folder.data()) == nullptr) throw writers::OutputError("cannot make a folder for the bench's file in " + folder);
+  struct RemoveFolder {
+    const std::string& folder;
+    ~RemoveFolder() {
+      std::error_code ec;
+      std::filesystem::remove_all(folder, ec);
+    }
+  } remove_folder{folder};
+  const auto path = std::filesystem::path(folder) / "bench.glb";
   const auto t2 = Clock::now();
   writers::write_files(std::vector<writers::OutputFile>{
       {path.string(), [&](std::ostream& out) { writers::write_glb(fabric.mesh, "knitc bench", out); }}});
@@ -61,7 +72,6 @@ int bench(int wales, int courses, const CompileOptions& options, bool header) {
   const double total = seconds_since(start);
   const double peak = peak_mib();  // before the memcpy below, which holds two more copies
   const auto bytes = std::filesystem::file_size(path);
-  std::filesystem::remove(path);
   std::size_t triangles = 0;
   for (const auto& p : fabric.mesh.primitives) triangles += p.indices.size() / 3;
   const double loops = static_cast<double>(fabric.layout.loops.size());

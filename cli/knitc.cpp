@@ -1,7 +1,13 @@
 // knitc: the command line. The only place that wires runtime, compiler and writers.
-// Exit codes: 0 success, 1 a problem in the pattern, 2 bad command-line use.
+// Exit codes: 0 success, 1 a problem in the pattern (file:line: ...), 2 bad command-line
+// use, 3 a file that could not be read or written (disk full, permissions, not a
+// regular file), 4 out of memory or a fault of knitc's own.
+#include <charconv>
 #include <chrono>
+#include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <mutex>
 
@@ -10,6 +16,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <variant>
 #include <vector>
 
@@ -28,6 +35,12 @@ namespace {
 
 constexpr int exit_pattern = 1;
 constexpr int exit_usage = 2;
+constexpr int exit_io = 3;
+constexpr int exit_internal = 4;
+
+// Everything knitc prints about a problem goes through here: a message may quote a
+// script's text or a path, which must not reach the terminal raw.
+void report(const std::string& message) { fmt::print(stderr, "{}\n", knitc::runtime::printable(message, 4000)); }
 
 struct Args {
   std::string pattern;
@@ -47,14 +60,15 @@ struct Args {
 std::variant<knitc::Pattern, int> load(const Args& args) {
   try {
     auto result = knitc::runtime::run_pattern_file(args.pattern, args.run);
-    for (const auto& w : result.warnings) fmt::print(stderr, "{}\n", w);
+    for (const auto& w : result.warnings) report(w);
     return std::move(result.pattern);
   } catch (const knitc::runtime::PatternError& e) {
-    fmt::print(stderr, "{}\n", e.what());
+    for (const auto& w : e.warnings) report(w);
+    report(e.what());
     return exit_pattern;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "knitc: {}\n", e.what());
-    return exit_usage;
+  } catch (const knitc::runtime::FileError& e) {
+    report(std::string("knitc: ") + e.what());
+    return exit_io;
   }
 }
 
@@ -94,7 +108,7 @@ std::variant<knitc::Fabric, int> compile(const knitc::Pattern& pattern, const Ar
     options.progress = [&progress](const char* stage, double fraction) { progress(stage, fraction); };
     return knitc::compile(pattern, options);
   } catch (const knitc::CompileError& e) {
-    fmt::print(stderr, "{}\n", e.what());
+    report(e.what());
     return exit_pattern;
   }
 }
@@ -103,9 +117,9 @@ int write(const std::vector<knitc::writers::OutputFile>& files) {
   try {
     knitc::writers::write_files(files);
     return 0;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "knitc: {}\n", e.what());
-    return exit_usage;
+  } catch (const knitc::writers::OutputError& e) {
+    report(std::string("knitc: ") + e.what());
+    return exit_io;
   }
 }
 
@@ -177,7 +191,8 @@ int build(const Args& args) {
     files.push_back(knitc::writers::text_file(args.centreline, knitc::writers::centreline_json(pattern, fabric, args.compile.loop_model)));
   if (const int code = write(files); code != 0) return code;
   if (args.stats) print_stats(pattern, fabric);
-  if (!args.quiet && !args.stats) fmt::print(stderr, "knitc: wrote {} ({} loops)\n", args.output, fabric.layout.loops.size());
+  if (!args.quiet && !args.stats && args.output != "-")
+    report(fmt::format("knitc: wrote {} ({} loops)", args.output, fabric.layout.loops.size()));
   return 0;
 }
 
@@ -189,12 +204,12 @@ int render(const Args& args) {
   try {
     png = knitc::render::png(fabric.mesh, args.render);
   } catch (const std::exception& e) {
-    fmt::print(stderr, "knitc: cannot render: {}\n", e.what());
-    return exit_usage;
+    report(std::string("knitc: cannot render: ") + e.what());
+    return exit_internal;
   }
   if (const int code = write({knitc::writers::text_file(args.output, std::move(png))}); code != 0) return code;
   if (args.stats) print_stats(pattern, fabric);
-  if (!args.quiet && !args.stats) fmt::print(stderr, "knitc: wrote {}\n", args.output);
+  if (!args.quiet && !args.stats && args.output != "-") report("knitc: wrote " + args.output);
   return 0;
 }
 
@@ -203,18 +218,13 @@ int snapshot(const Args& args) {
   if (const int* code = std::get_if<int>(&result)) return *code;
   const auto& [pattern, fabric] = std::get<Compiled>(result);
   const std::string text = knitc::writers::snapshot(pattern, fabric);
-  if (args.output.empty()) {
-    fmt::print("{}", text);
-    return 0;
-  }
-  return write({knitc::writers::text_file(args.output, text)});
+  return write({knitc::writers::text_file(args.output.empty() ? "-" : args.output, text)});
 }
 
 int chart(const Args& args) {
   auto loaded = load(args);
   if (const int* code = std::get_if<int>(&loaded)) return *code;
-  fmt::print("{}", knitc::writers::chart_text(std::get<knitc::Pattern>(loaded)));
-  return 0;
+  return write({knitc::writers::text_file("-", knitc::writers::chart_text(std::get<knitc::Pattern>(loaded)))});
 }
 
 int check(const Args& args) {
@@ -226,6 +236,32 @@ int check(const Args& args) {
                p.cast_on, knitc::produced(p.courses.back()), p.bound_off ? " (bound off)" : "");
   }
   return 0;
+}
+
+// A number that is one: CLI11's Range lets NaN through (every comparison with it is false).
+const CLI::Validator finite(
+    [](std::string& text) -> std::string {
+      double v = 0.0;
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) return "not a finite number: " + text;
+      return "";
+    },
+    "FINITE");
+
+// "WxH" with both whole numbers from lo to hi, or nothing.
+std::optional<std::pair<int, int>> dimensions(const std::string& text, int lo, int hi) {
+  const auto x = text.find('x');
+  if (x == std::string::npos) return std::nullopt;
+  auto whole = [&](std::string_view part) -> std::optional<int> {
+    long long v = 0;
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
+    if (ec != std::errc() || end != part.data() + part.size() || part.empty() || v < lo || v > hi) return std::nullopt;
+    return static_cast<int>(v);
+  };
+  const auto w = whole(std::string_view(text).substr(0, x));
+  const auto h = whole(std::string_view(text).substr(x + 1));
+  if (!w || !h) return std::nullopt;
+  return std::pair{*w, *h};
 }
 
 // What every command that runs a pattern takes.
@@ -241,6 +277,10 @@ void add_pattern_options(CLI::App* cmd, Args& a) {
          "--max-memory", [&a](std::size_t mib) { a.run.limits.memory_bytes = mib << 20; },
          "MiB of memory a script may hold (default 256)")
       ->check(CLI::Range(1, 16384));
+  cmd->add_option("--max-seconds", a.run.limits.seconds,
+                  "seconds a script may run, whatever it calls (default 3, or 3 per 200 million --max-instructions)")
+      ->check(finite)
+      ->check(CLI::Range(0.01, 3600.0));
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing on success");
 }
 
@@ -267,6 +307,7 @@ void add_compile_options(CLI::App* cmd, Args& a) {
   cmd->add_option("--sides", a.compile.sides, "vertices around each tube ring, over --quality's")->check(CLI::Range(3, 256));
   cmd->add_option("--tolerance", a.compile.chord_tolerance,
                   "chord error of the tube surface as a fraction of the yarn diameter, over --quality's")
+      ->check(finite)
       ->check(CLI::Range(1e-4, 1.0));
   const std::map<std::string, bool> on_off{{"on", true}, {"off", false}};
   cmd->add_option("--relax", a.compile.relax,
@@ -291,15 +332,26 @@ int run(int argc, char** argv);
 
 // Never a crash: whatever escapes is reported, and no output has been renamed into place.
 int main(int argc, char** argv) {
+  knitc::writers::remove_temporaries_on_signals();
+  int code = exit_internal;
   try {
-    return run(argc, argv);
+    code = run(argc, argv);
   } catch (const std::bad_alloc&) {
     std::fputs("knitc: out of memory; knit a smaller piece or use --quality draft\n", stderr);
-    return exit_usage;
+    return exit_internal;
+  } catch (const std::system_error& e) {  // fmt::print to a full disk or a closed pipe
+    report(std::string("knitc: cannot write standard output: ") + e.code().message());
+    return exit_io;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "knitc: %s\n", e.what());
-    return exit_usage;
+    report(std::string("knitc: internal error: ") + e.what());
+    return exit_internal;
   }
+  // What went to standard output must have got there (a full disk, a closed pipe).
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+    report(std::string("knitc: cannot write standard output: ") + std::strerror(errno));
+    return code == 0 ? exit_io : code;
+  }
+  return code;
 }
 
 int run(int argc, char** argv) {
@@ -310,7 +362,7 @@ int run(int argc, char** argv) {
   Args b;
   auto* build_cmd = app.add_subcommand("build", "compile a pattern script into a glTF binary (.glb)");
   add_pattern_options(build_cmd, b);
-  build_cmd->add_option("-o,--output", b.output, "the .glb to write")->required();
+  build_cmd->add_option("-o,--output", b.output, "the .glb to write (- for standard output)")->required();
   build_cmd->add_option("--centreline", b.centreline, "also write the centrelines and loop data points as JSON (mm)");
   build_cmd->add_flag("--compress", b.compress,
                       "a smaller file: positions (uint16) and normals (int8) quantised with KHR_mesh_quantization, then every "
@@ -320,7 +372,7 @@ int run(int argc, char** argv) {
   Args r;
   auto* render_cmd = app.add_subcommand("render", "draw a lit preview of a pattern's fabric (.png)");
   add_pattern_options(render_cmd, r);
-  render_cmd->add_option("-o,--output", r.output, "the .png to write")->required();
+  render_cmd->add_option("-o,--output", r.output, "the .png to write (- for standard output)")->required();
   render_cmd->add_option("--size", r.size, "image size WxH of one view (default 960x720)");
   const std::map<std::string, knitc::render::RenderOptions::Side> sides{
       {"face", knitc::render::RenderOptions::Side::face},
@@ -366,18 +418,42 @@ int run(int argc, char** argv) {
     app.exit(e);
     return exit_usage;
   }
-  // An output must not overwrite the pattern it comes from.
+  // An output must not overwrite the pattern it comes from, nor another output: paths
+  // are compared as the files they name (DIR/../X.glb is X.glb, a link is its target).
   for (const Args* args : {&b, &r, &n}) {
+    if (args->pattern.empty()) continue;
+    const std::string pattern_file = knitc::writers::file_identity(args->pattern);
+    std::vector<std::pair<std::string, std::string>> seen;  // identity, path
     for (const std::string* output : {&args->output, &args->centreline}) {
-      if (output->empty() || args->pattern.empty()) continue;
-      std::error_code ec;
-      const auto out = std::filesystem::weakly_canonical(*output, ec);
-      const auto in = std::filesystem::weakly_canonical(args->pattern, ec);
-      if (!ec && out == in) {
-        fmt::print(stderr, "knitc: {} would overwrite the pattern itself\n", *output);
+      if (output->empty()) continue;
+      const std::string id = knitc::writers::file_identity(*output);
+      if (id == pattern_file) {
+        report("knitc: " + *output + " would overwrite the pattern itself");
         return exit_usage;
       }
+      for (const auto& [other_id, other] : seen) {
+        if (id == other_id) {
+          report("knitc: " + *output + " and " + other + " are the same file; give each output its own");
+          return exit_usage;
+        }
+      }
+      seen.emplace_back(id, *output);
     }
+  }
+  // Binary output to a terminal is never what was meant.
+  for (const Args* args : {&b, &r}) {
+    if (args->output == "-" && ::isatty(STDOUT_FILENO) != 0) {
+      report("knitc: -o - would write binary data to the terminal; redirect it (> file, | program) or name a file");
+      return exit_usage;
+    }
+  }
+  // A larger instruction budget brings a longer deadline, unless one is given.
+  for (auto [cmd, args] : {std::pair{build_cmd, &b}, std::pair{render_cmd, &r}, std::pair{snapshot_cmd, &n},
+                           std::pair{chart_cmd, &c}, std::pair{check_cmd, &k}}) {
+    if (!cmd->parsed() || cmd->get_option("--max-seconds")->count() != 0) continue;
+    const knitc::runtime::Limits defaults;
+    args->run.limits.seconds = defaults.seconds * std::max(1.0, static_cast<double>(args->run.limits.instructions) /
+                                                                    static_cast<double>(defaults.instructions));
   }
   // --quality sets the density; --sides and --tolerance, when given, win over it.
   for (auto [cmd, args] : {std::pair{build_cmd, &b}, std::pair{render_cmd, &r}, std::pair{snapshot_cmd, &n},
@@ -387,44 +463,36 @@ int run(int argc, char** argv) {
     if (cmd->get_option("--sides")->count() == 0) args->compile.sides = d.sides;
     if (cmd->get_option("--tolerance")->count() == 0) args->compile.chord_tolerance = d.chord_tolerance;
   }
-  if (build_cmd->parsed()) {
-    if (!b.centreline.empty() && b.centreline == b.output) {
-      fmt::print(stderr, "knitc: --centreline and -o name the same file\n");
-      return exit_usage;
-    }
-    return build(b);
-  }
+  if (build_cmd->parsed()) return build(b);
   if (render_cmd->parsed()) {
-    int w = 0, h = 0;
-    char rest = 0;
-    if (std::sscanf(r.size.c_str(), "%dx%d%c", &w, &h, &rest) != 2 || w < 16 || h < 16 || w > 8192 || h > 8192) {
-      fmt::print(stderr, "knitc: --size is \"{}\"; give WxH with each from 16 to 8192, e.g. 960x720\n", r.size);
+    const auto size = dimensions(r.size, 16, 8192);
+    if (!size) {
+      report("knitc: --size is \"" + r.size + "\"; give WxH with each from 16 to 8192, e.g. 960x720");
       return exit_usage;
     }
-    r.render.width = w;
-    r.render.height = h;
+    r.render.width = size->first;
+    r.render.height = size->second;
     return render(r);
   }
   if (snapshot_cmd->parsed()) return snapshot(n);
   if (bench_cmd->parsed()) {
-    int w = 0, h = 0;
-    char rest = 0;
-    if (std::sscanf(bench_size.c_str(), "%dx%d%c", &w, &h, &rest) != 2 || w < 1 || h < 1 || w > 100000 || h > 100000) {
-      fmt::print(stderr, "knitc: --swatch is \"{}\"; give WALESxCOURSES, e.g. 150x250\n", bench_size);
+    const auto size = dimensions(bench_size, 1, 100000);
+    if (!size) {
+      report("knitc: --swatch is \"" + bench_size + "\"; give WALESxCOURSES with each from 1 to 100000, e.g. 150x250");
       return exit_usage;
     }
     try {
-      return knitc::cli::bench(w, h, bench_args.compile, bench_header);
+      return knitc::cli::bench(size->first, size->second, bench_args.compile, bench_header);
     } catch (const knitc::CompileError& e) {
-      fmt::print(stderr, "{}\n", e.what());
+      report(e.what());
       return exit_pattern;
+    } catch (const knitc::writers::OutputError& e) {
+      report(std::string("knitc: ") + e.what());
+      return exit_io;
     }
   }
   if (chart_cmd->parsed()) return chart(c);
   if (check_cmd->parsed()) return check(k);
-  if (reference_cmd->parsed()) {
-    fmt::print("{}", knitc::runtime::language_reference());
-    return 0;
-  }
+  if (reference_cmd->parsed()) return write({knitc::writers::text_file("-", knitc::runtime::language_reference())});
   return exit_usage;
 }

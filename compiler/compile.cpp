@@ -57,6 +57,16 @@ glm::vec3 linear_rgb(const std::string& hex) {
 
 namespace {
 
+// A twisted ply needs samples along its helix even where the centreline is straight.
+double max_sample_step(const Yarn& yarn) {
+  return yarn.section == Section::plied && yarn.twist > 0.0 ? (100.0 / yarn.twist) / 12.0
+                                                            : std::numeric_limits<double>::infinity();
+}
+
+std::uint64_t strand_count(const Yarn& yarn) {
+  return yarn.section == Section::plied ? static_cast<std::uint64_t>(yarn.plies) : 1;
+}
+
 CurvePiece trace_curve(yarn_paths::Piece path, const Pattern& pattern, const CompileOptions& options) {
   CurvePiece piece;
   piece.path = std::move(path);
@@ -69,9 +79,7 @@ CurvePiece trace_curve(yarn_paths::Piece path, const Pattern& pattern, const Com
   const Yarn& yarn = pattern.yarns[piece.path.yarn];
   const double d = yarn.diameter;
   const double tolerance = options.chord_tolerance * d;
-  // A twisted ply needs samples along its helix even where the centreline is straight.
-  const double max_step = yarn.section == Section::plied && yarn.twist > 0.0 ? (100.0 / yarn.twist) / 12.0
-                                                                             : std::numeric_limits<double>::infinity();
+  const double max_step = max_sample_step(yarn);
   const auto& u = piece.curve.parameters;
   const std::size_t last = u.size() - 1;
   std::vector<std::size_t> breaks = {0, last};
@@ -227,6 +235,20 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   Fabric fabric;
   fabric.layout = std::move(layout);
   auto paths = yarn_paths::trace(fabric.layout, options.loop_model);
+  // The mesh's size from the data points' polygons, before any curve is fitted or
+  // relaxed: a fabric far past the limit is turned away in a moment, not after a minute.
+  double estimate = 0.0;
+  for (const auto& piece : paths) {
+    const Yarn& yarn = pattern.yarns[piece.yarn];
+    const double samples = sweep::estimate_samples(piece.data_points, options.chord_tolerance * yarn.diameter,
+                                                   0.5 * yarn.diameter, max_sample_step(yarn));
+    estimate += static_cast<double>(strand_count(yarn)) * (samples + 2.0) * (options.sides + 1);
+  }
+  // (On the library's fabrics the estimate is 0.87 to 1.05 of the count.)
+  if (estimate > static_cast<double>(max_vertices))
+    throw CompileError(source_file(pattern) + ": the mesh would have about " + std::to_string(static_cast<long long>(estimate / 1e6)) +
+                       " million vertices, over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +
+                       " million; knit a smaller piece, or use --quality draft");
   if (options.relax) {
     if (options.progress) options.progress("relax", 0.0);
     const auto start = std::chrono::steady_clock::now();
@@ -253,11 +275,8 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   // The mesh's size is known from the samples: refuse what no machine of ours holds (and
   // what 32-bit indices cannot address) before allocating it.
   std::uint64_t vertices = 0;
-  for (const CurvePiece& p : fabric.pieces) {
-    const Yarn& yarn = pattern.yarns[p.path.yarn];
-    const std::uint64_t strands = yarn.section == Section::plied ? static_cast<std::uint64_t>(yarn.plies) : 1;
-    vertices += strands * (p.samples.size() + 2) * static_cast<std::uint64_t>(options.sides + 1);
-  }
+  for (const CurvePiece& p : fabric.pieces)
+    vertices += strand_count(pattern.yarns[p.path.yarn]) * (p.samples.size() + 2) * static_cast<std::uint64_t>(options.sides + 1);
   if (vertices > max_vertices)
     throw CompileError(source_file(pattern) + ": the mesh would have " + std::to_string(vertices / 1'000'000) +
                        " million vertices, over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +

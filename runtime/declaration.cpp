@@ -216,14 +216,15 @@ int pattern_verb(lua_State* L) {
   if (lua_type(L, 1) != LUA_TTABLE)
     fail(L, std::string("pattern takes a table: pattern { name = ..., gauge = ..., yarns = ... }, not a ") + luaL_typename(L, 1));
   only_known_keys(L, 1, "pattern{}", {"name", "gauge", "yarns", "knitting", "seed"});
-  Pattern& p = s.pattern;
+  // Read whole before anything is kept: a pattern{} that fails half-way (and is caught
+  // by pcall) leaves no yarns behind.
+  Pattern p;
   p.name = string_field(L, 1, "pattern{}", "name").value_or("untitled");
   read_yarns(L, 1, p);  // before the gauge: its default thickness follows the yarn
   read_gauge(L, 1, p);
-  for (const Yarn& y : p.yarns) s.yarn_ids.push_back(y.id);
   const std::string knitting = string_field(L, 1, "pattern{}", "knitting").value_or("round");
   if (knitting == "flat") p.knitting = Knitting::flat;
-  else if (knitting != "round") fail(L, "knitting is \"" + knitting + "\"; use \"round\" or \"flat\"");
+  else if (knitting != "round") fail(L, "knitting is \"" + printable(knitting, 100) + "\"; use \"round\" or \"flat\"");
   lua_getfield(L, 1, "seed");
   if (!lua_isnil(L, -1)) {
     const long long seed = whole_number(L, lua_gettop(L), "pattern{}.seed", -(1LL << 53), 1LL << 53);
@@ -236,6 +237,8 @@ int pattern_verb(lua_State* L) {
     }
   }
   lua_pop(L, 1);
+  s.pattern = std::move(p);
+  for (const Yarn& y : s.pattern.yarns) s.yarn_ids.push_back(y.id);
   s.declared = true;
   s.declared_line = caller_line(L);
   return 0;

@@ -10,13 +10,23 @@ namespace knitc::runtime {
 
 Script& script_of(lua_State* L) { return *static_cast<Script*>(sandbox_of(L).user); }
 
-SourceLocation caller_location(lua_State* L) {
-  lua_Debug ar;
-  for (int level = 1; lua_getstack(L, level, &ar) != 0; ++level) {
-    if (lua_getinfo(L, "Sl", &ar) != 0 && ar.currentline > 0)
-      return {ar.source[0] == '@' ? std::string(ar.source + 1) : std::string(ar.short_src), ar.currentline};
+SourceLocation caller_location(lua_State* L) { return running_location(L); }
+
+std::string text_of(lua_State* L, int index) {
+  std::size_t length = 0;
+  const char* s = lua_tolstring(L, index, &length);
+  return s != nullptr ? std::string(s, length) : std::string();
+}
+
+void warn(lua_State* L, const SourceLocation& at, const std::string& message) {
+  Script& s = script_of(L);
+  if (s.warnings.size() >= max_warnings) {
+    ++s.warnings_dropped;
+    return;
   }
-  return {sandbox_of(L).file, 0};
+  std::string text = at.file + ":" + std::to_string(at.line) + ": warning: " + message;
+  hold(L, text.size() + sizeof(std::string));
+  s.warnings.push_back(std::move(text));
 }
 
 int caller_line(lua_State* L) { return caller_location(L).line; }
@@ -76,7 +86,7 @@ std::optional<std::string> string_field(lua_State* L, int index, const std::stri
   std::optional<std::string> result;
   if (!lua_isnil(L, -1)) {
     if (lua_type(L, -1) != LUA_TSTRING) fail(L, table + "." + key + " must be a string, not a " + luaL_typename(L, -1));
-    result = lua_tostring(L, -1);
+    result = text_of(L, -1);
   }
   lua_pop(L, 1);
   return result;
@@ -89,7 +99,10 @@ std::vector<std::string> sorted_keys(lua_State* L, int index, const std::string&
   while (lua_next(L, index) != 0) {
     lua_pop(L, 1);
     if (lua_type(L, -1) != LUA_TSTRING) fail(L, table + " has a key that is not a name");
-    keys.emplace_back(lua_tostring(L, -1));
+    if (static_cast<long long>(keys.size()) >= max_table_keys)
+      fail(L, table + " has more than " + std::to_string(max_table_keys) + " keys");
+    charge(L, 10);
+    keys.push_back(text_of(L, -1));
   }
   std::sort(keys.begin(), keys.end());
   return keys;
@@ -106,14 +119,18 @@ void only_known_fields(lua_State* L, int index, const std::string& table, std::i
   lua_pushnil(L);
   while (lua_next(L, index) != 0) {
     lua_pop(L, 1);
-    if (lua_type(L, -1) == LUA_TSTRING) named.emplace_back(lua_tostring(L, -1));
+    charge(L, 10);
+    if (lua_type(L, -1) != LUA_TSTRING) continue;
+    if (static_cast<long long>(named.size()) >= max_table_keys)
+      fail(L, table + " has more than " + std::to_string(max_table_keys) + " named fields");
+    named.push_back(text_of(L, -1));
   }
   std::sort(named.begin(), named.end());  // the first unknown one, whatever the table order
   for (const std::string& key : named) {
     if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) {
       std::string list;
       for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
-      fail(L, "unknown field '" + key + "' in " + table + "; known fields: " + list);
+      fail(L, "unknown field '" + printable(key, 100) + "' in " + table + "; known fields: " + list);
     }
   }
 }

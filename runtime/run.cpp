@@ -1,12 +1,11 @@
 // Running a pattern script: the sandbox, the verbs and stitch names as globals, the
 // script, then the checks of the whole pattern.
 #include <filesystem>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "checks.hpp"
 #include "script.hpp"
+#include "source_files.hpp"
 
 namespace knitc::runtime {
 
@@ -36,23 +35,35 @@ int long_string_first_line(const std::string& source, int line) {
   return line;
 }
 
-RunResult run_pattern(std::string_view source, const std::string& file, const RunOptions& options) {
+namespace {
+
+// The script's warnings, printable, with a count of those not kept.
+std::vector<std::string> warnings_of(const Script& script) {
+  std::vector<std::string> out;
+  for (const std::string& w : script.warnings) out.push_back(printable(w, 1000));
+  if (script.warnings_dropped > 0)
+    out.push_back("warning: " + std::to_string(script.warnings_dropped) + " more warnings not shown");
+  return out;
+}
+
+RunResult run_script(std::string_view source, const std::string& file, const RunOptions& options, Script& script) {
+  if (source.size() > max_source_bytes)
+    throw PatternError(file + ":1: the pattern is " + std::to_string(source.size() >> 10) + " KiB; knitc reads patterns of at most " +
+                       std::to_string(max_source_bytes >> 20) + " MiB");
   SandboxState state;
   state.limits = options.limits;
   state.seed = options.seed.value_or(0);
   state.file = file;
   state.sources[file] = std::string(source);
-  Script script;
   script.options = options;
   script.directory = std::filesystem::path(file).parent_path().string();
   state.user = &script;
   std::unique_ptr<lua_State, void (*)(lua_State*)> owner(open_sandbox(state), lua_close);
   lua_State* L = owner.get();
-  if (L == nullptr) throw PatternError(file + ": not enough memory to start the pattern's Lua state");
-  lua_pushcfunction(L, pattern_verb);
-  lua_setglobal(L, "pattern");
+  if (L == nullptr) throw PatternError(file + ":1: not enough memory to start the pattern's Lua state");
   for (const Verb& v : verb_table()) {
-    lua_pushcfunction(L, v.function);
+    lua_pushlightuserdata(L, const_cast<Verb*>(&v));
+    lua_pushcclosure(L, verb_entry, 1);
     lua_setglobal(L, v.name);
   }
   open_modules(L);
@@ -72,21 +83,36 @@ RunResult run_pattern(std::string_view source, const std::string& file, const Ru
   }
   RunResult result;
   for (const Diagnostic& d : check_pattern(p, {options.max_tucks, options.max_float_mm})) {
-    const std::string message = d.where.file + ":" + std::to_string(d.where.line) + ": " + d.message;
-    if (d.error) throw PatternError(message);
-    result.warnings.push_back("warning: " + message);
+    const std::string where = d.where.file + ":" + std::to_string(d.where.line) + ": ";
+    if (d.error) throw PatternError(where + d.message);
+    result.warnings.push_back(printable(where + "warning: " + d.message, 1000));
   }
-  result.warnings.insert(result.warnings.end(), script.warnings.begin(), script.warnings.end());
+  const auto script_warnings = warnings_of(script);
+  result.warnings.insert(result.warnings.end(), script_warnings.begin(), script_warnings.end());
   result.pattern = std::move(p);
   return result;
 }
 
+}  // namespace
+
+RunResult run_pattern(std::string_view source, const std::string& file, const RunOptions& options) {
+  Script script;
+  try {
+    return run_script(source, file, options, script);
+  } catch (const PatternError& e) {
+    // The warnings given before the error are still news to the designer.
+    throw PatternError(printable(e.what()), warnings_of(script));
+  }
+}
+
 RunResult run_pattern_file(const std::string& path, const RunOptions& options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read pattern " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return run_pattern(text.str(), path, options);
+  std::string text;
+  try {
+    text = read_source(path);
+  } catch (const SourceTooLarge& e) {
+    throw PatternError(printable(e.what()));
+  }
+  return run_pattern(text, path, options);
 }
 
 }  // namespace knitc::runtime

@@ -14,9 +14,15 @@
 
 namespace knitc::runtime {
 
+// A script's budget (docs/security.md). Work and memory stop a script at the same place
+// on every machine; the deadline is a wall-clock backstop for what they misjudge.
 struct Limits {
-  std::uint64_t instructions = 200'000'000;  // Lua VM instructions, about a second
-  std::size_t memory_bytes = 256u << 20;     // bytes the Lua state may hold at once
+  std::uint64_t instructions = 200'000'000;  // units of work: Lua VM instructions, and the
+                                             // same in library calls; about a second
+  std::size_t memory_bytes = 256u << 20;     // bytes the script may hold at once, in Lua
+                                             // and in what the verbs keep for it
+  double seconds = 3.0;                      // wall-clock time the script may run
+  std::size_t string_bytes = 4u << 20;       // the longest string a script may make
 };
 
 struct RunOptions {
@@ -29,8 +35,17 @@ struct RunOptions {
   double max_float_mm = 25.0;        // floats longer than this are warned about
 };
 
-// A problem in a pattern script. what() is "file:line: what went wrong; what to do".
+// A problem in a pattern script. what() is "file:line: what went wrong; what to do",
+// printable (no control bytes, no overlong words) and bounded in length.
 class PatternError : public std::runtime_error {
+ public:
+  explicit PatternError(const std::string& message, std::vector<std::string> warnings_before = {})
+      : std::runtime_error(message), warnings(std::move(warnings_before)) {}
+  std::vector<std::string> warnings;  // the warnings given before the error, to print first
+};
+
+// A pattern file that cannot be read: missing, not a regular file, unreadable.
+class FileError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
@@ -44,9 +59,18 @@ struct RunResult {
 // Throws PatternError for any problem in the script, its limits or its meaning.
 RunResult run_pattern(std::string_view source, const std::string& file, const RunOptions& options = {});
 
-// Reads the script at `path` and runs it. Throws std::runtime_error if the file cannot
-// be read, PatternError for problems in it.
+// Reads the script at `path` and runs it. Throws FileError if the file cannot be read
+// (only regular files are: never a FIFO or a device), PatternError for problems in it,
+// including a file over the size a pattern may have (max_source_bytes).
 RunResult run_pattern_file(const std::string& path, const RunOptions& options = {});
+
+// The largest pattern or module file knitc reads.
+inline constexpr std::size_t max_source_bytes = 4u << 20;
+
+// `text` fit to print in a message: control bytes, stray UTF-8 and bidirectional
+// overrides written as escapes, any word over 200 bytes cut in its middle, and the
+// whole at most `max_bytes` (cut in the middle, saying how much was left out).
+std::string printable(std::string_view text, std::size_t max_bytes = 2000);
 
 // The reference of the pattern language, as Markdown: every verb, stitch and chart
 // symbol, generated from the tables that declare them (docs/language.md).

@@ -30,7 +30,11 @@ struct Script {
   long long loops = 0;
   language::Legend legend = language::default_legend();
   std::vector<std::string> warnings;
+  std::size_t warnings_dropped = 0;   // warnings past max_warnings, counted only
+  const char* running_verb = nullptr;  // the verb running now: verbs do not nest
 };
+
+inline constexpr std::size_t max_warnings = 200;  // kept; the rest are counted
 
 Script& script_of(lua_State* L);
 
@@ -45,6 +49,11 @@ int caller_line(lua_State* L);
 // the designer's call), or `fallback` when no frame is in the pattern file.
 SourceLocation pattern_location(lua_State* L, const SourceLocation& fallback);
 std::string show(double v);
+
+// The string at `index`, NUL bytes and all (lua_tostring would stop at the first).
+std::string text_of(lua_State* L, int index);
+// Adds a warning "file:line: warning: ..." (at most max_warnings are kept).
+void warn(lua_State* L, const SourceLocation& at, const std::string& message);
 
 std::optional<double> number_field(lua_State* L, int index, const std::string& table, const char* key);
 std::optional<std::string> string_field(lua_State* L, int index, const std::string& table, const char* key);
@@ -68,7 +77,9 @@ void open_modules(lua_State* L);
 // The first line of the long string that starts at or after `line` in the chunk
 // `source` (a chart's first row), or `line` if it cannot be found.
 int long_string_first_line(const std::string& source, int line);
-// The other verbs, declared in verbs.cpp.
+// The other verbs, declared in verbs.cpp. Each is registered through verb_entry,
+// which refuses a verb called while another runs (from a metamethod of its arguments),
+// charges the call, and turns a C++ allocation failure into the memory stop.
 struct Verb {
   const char* name;
   lua_CFunction function;
@@ -77,9 +88,11 @@ struct Verb {
   const char* example;   // a line of Lua
 };
 std::span<const Verb> verb_table();
+int verb_entry(lua_State* L);  // upvalue 1: the Verb, as a light userdata
 
 // Limits of a fabric.
 inline constexpr long long max_stitches = 100'000;  // per course
 inline constexpr long long max_loops = 20'000'000;  // in the whole fabric
+inline constexpr long long max_table_keys = 10'000;  // in a table a verb reads (pattern{}, a legend)
 
 }  // namespace knitc::runtime

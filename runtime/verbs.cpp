@@ -9,6 +9,8 @@ namespace knitc::runtime {
 
 namespace {
 
+constexpr std::size_t max_item_bytes = 100;  // a course{} item names one stitch
+
 void need_pattern(lua_State* L, const char* verb) {
   if (!script_of(L).declared) fail(L, std::string(verb) + " comes before pattern{}; declare the pattern first");
 }
@@ -50,6 +52,13 @@ void add_course(lua_State* L, std::vector<Op> ops, const SourceLocation& where) 
   c.ops = std::move(ops);
   c.side = side_of(s, next_row(s));
   c.where = where.file == sandbox_of(L).file ? where : pattern_location(L, where);
+  // What the course costs to work and keep, charged to the script.
+  charge(L, 200 + 5 * c.ops.size());  // measured: about 30 ns a stitch, 6 instructions' time
+  auto& courses = s.pattern.courses;
+  // The course's own blocks (and malloc's keeping of them), and the list's next growth.
+  std::size_t bytes = sizeof(Course) + c.ops.capacity() * sizeof(Op) + c.where.file.capacity() + 32;
+  if (courses.size() == courses.capacity()) bytes += std::max<std::size_t>(1, courses.capacity()) * sizeof(Course);
+  hold(L, bytes);
   const int live = produced(c);
   if (live > max_stitches)
     fail(L, "row " + std::to_string(next_row(s)) + " leaves " + std::to_string(live) + " stitches; at most " +
@@ -88,6 +97,7 @@ void work_written(lua_State* L, const language::RowText& text, const std::string
 }
 
 language::RowText parse_written(lua_State* L, const std::string& text, const SourceLocation* at = nullptr) {
+  charge(L, text.size() / 4 + 1);
   auto parsed = language::parse_row(text, script_of(L).yarn_ids);
   if (auto* e = std::get_if<language::TextError>(&parsed)) {
     const std::string m = "row " + std::to_string(next_row(script_of(L))) + " " + language::quote_row(text) + ": " + e->message;
@@ -117,7 +127,10 @@ int cast_on_verb(lua_State* L) {
   Script& s = script_of(L);
   if (s.cast_on_line != 0) fail(L, "cast_on was already called at line " + std::to_string(s.cast_on_line));
   s.live = static_cast<int>(whole_number(L, 1, "cast_on's stitch count", 1, max_stitches));
-  if (!lua_isnoneornil(L, 2)) s.current_yarn = yarn_index(L, luaL_checkstring(L, 2));
+  if (!lua_isnoneornil(L, 2)) {
+    if (lua_type(L, 2) != LUA_TSTRING) fail(L, "cast_on's yarn must be a declared yarn's name, e.g. cast_on(24, \"B\")");
+    s.current_yarn = yarn_index(L, text_of(L, 2));
+  }
   s.pattern.cast_on = s.live;
   s.purl_faced.assign(static_cast<std::size_t>(s.live), false);
   s.pattern.cast_on_yarn = s.current_yarn;
@@ -129,7 +142,7 @@ std::string text_argument(lua_State* L, int arg, const char* verb) {
   if (lua_type(L, arg) != LUA_TSTRING)
     fail(L, std::string(verb) + " takes the row's written instructions as a string, e.g. " + verb + "(\"k2, p2\"), not a " +
                 luaL_typename(L, arg));
-  return lua_tostring(L, arg);
+  return text_of(L, arg);
 }
 
 int row_verb(lua_State* L) {
@@ -158,16 +171,19 @@ int course_verb(lua_State* L) {
   only_known_fields(L, 1, "course{}", {"rep", "yarn"});
   const lua_Integer n = luaL_len(L, 1);
   if (n == 0) fail(L, "course{} lists no stitches; give some, e.g. course { k, p }");
+  if (n < 0 || n > max_stitches)
+    fail(L, "course{} lists " + std::to_string(n) + " stitches; a course lists at most " + std::to_string(max_stitches));
   std::string text;
   for (lua_Integer i = 1; i <= n; ++i) {
     lua_geti(L, 1, i);
     std::string item;
+    charge(L, 20);
     if (lua_type(L, -1) == LUA_TSTRING) {
-      item = lua_tostring(L, -1);
+      item = text_of(L, -1);
     } else if (lua_type(L, -1) == LUA_TTABLE) {
       lua_geti(L, -1, 1);
       if (lua_type(L, -1) != LUA_TSTRING) fail(L, "course{} item " + std::to_string(i) + " must name its stitch first, e.g. { k, yarn = \"B\" }");
-      item = lua_tostring(L, -1);
+      item = text_of(L, -1);
       lua_pop(L, 1);
       const auto yarn = string_field(L, lua_gettop(L), "course{} item " + std::to_string(i), "yarn");
       if (yarn) {
@@ -178,6 +194,8 @@ int course_verb(lua_State* L) {
       fail(L, "course{} item " + std::to_string(i) + " is a " + luaL_typename(L, -1) +
                   "; give stitches such as k, p, k2tog or \"sl1 wyif\"");
     }
+    if (item.size() > max_item_bytes)
+      fail(L, "course{} item " + std::to_string(i) + " is " + std::to_string(item.size()) + " bytes long; give one stitch per item, such as k2tog");
     if (item.find_first_of(",;*()[]") != std::string::npos)
       fail(L, "course{} item " + std::to_string(i) + " is \"" + item + "\"; give one stitch per item");
     text += (text.empty() ? "" : ", ") + item;
@@ -200,11 +218,11 @@ void read_legend(lua_State* L, int index, language::Legend& legend, const std::s
     std::string name;
     int yarn = -1;
     if (lua_type(L, -1) == LUA_TSTRING) {
-      name = lua_tostring(L, -1);
+      name = text_of(L, -1);
     } else if (lua_type(L, -1) == LUA_TTABLE) {
       lua_geti(L, -1, 1);
       if (lua_type(L, -1) != LUA_TSTRING) fail(L, where + "[\"" + symbol + "\"] must name its stitch first, e.g. { \"k\", yarn = \"B\" }");
-      name = lua_tostring(L, -1);
+      name = text_of(L, -1);
       lua_pop(L, 1);
       if (const auto y = string_field(L, lua_gettop(L), where + "[\"" + symbol + "\"]", "yarn")) yarn = yarn_index(L, *y);
     } else {
@@ -232,12 +250,12 @@ int chart_verb(lua_State* L) {
   std::string text;
   long long repeats = 1;
   if (lua_type(L, 1) == LUA_TSTRING) {
-    text = lua_tostring(L, 1);
+    text = text_of(L, 1);
   } else if (lua_type(L, 1) == LUA_TTABLE) {
     only_known_fields(L, 1, "chart{}", {"legend", "rep"});
     lua_geti(L, 1, 1);
     if (lua_type(L, -1) != LUA_TSTRING) fail(L, "chart{} needs the chart text first: chart { [[ ... ]], rep = 2 }");
-    text = lua_tostring(L, -1);
+    text = text_of(L, -1);
     lua_pop(L, 1);
     lua_getfield(L, 1, "legend");
     if (!lua_isnil(L, -1)) {
@@ -255,6 +273,7 @@ int chart_verb(lua_State* L) {
   const SourceLocation start = block_start(L);
   const int first_line = start.line;
   const std::string& chart_file = start.file;
+  charge(L, text.size() / 4 + 1);
   auto parsed = language::parse_chart(text, legend);
   if (auto* e = std::get_if<language::ChartError>(&parsed)) fail_at(L, {chart_file, first_line + e->line}, e->message);
   const auto& rows = std::get<std::vector<language::ChartRow>>(parsed);
@@ -301,16 +320,14 @@ int knitspeak_verb(lua_State* L) {
   Script& s = script_of(L);
   if (lua_type(L, 1) != LUA_TSTRING)
     fail(L, std::string("knitspeak takes the printed pattern as a string, knitspeak [[ Row 1: ... ]], not a ") + luaL_typename(L, 1));
-  const std::string text = lua_tostring(L, 1);
+  const std::string text = text_of(L, 1);
   const SourceLocation start = block_start(L);
   auto at = [&](int line) { return SourceLocation{start.file, start.line + line}; };
+  charge(L, text.size() / 4 + 1);
   auto read = language::read_knitspeak(text, s.yarn_ids);
   if (auto* e = std::get_if<language::KnitspeakNote>(&read)) fail_at(L, at(e->line), e->message);
   const auto& block = std::get<language::Knitspeak>(read);
-  for (const auto& skipped : block.skipped) {
-    const SourceLocation w = at(skipped.line);
-    s.warnings.push_back(w.file + ":" + std::to_string(w.line) + ": warning: " + skipped.message);
-  }
+  for (const auto& skipped : block.skipped) warn(L, at(skipped.line), skipped.message);
   if (block.rows.empty()) fail(L, "the knitspeak text has no rows; write them as Row 1: ..., Row 2: ...");
   for (const auto& r : block.rows) {
     const SourceLocation where = at(r.line);
@@ -333,7 +350,7 @@ int knitspeak_verb(lua_State* L) {
 int yarn_verb(lua_State* L) {
   need_pattern(L, "yarn");
   if (lua_type(L, 1) != LUA_TSTRING) fail(L, "yarn takes a declared yarn's name, e.g. yarn \"B\"");
-  script_of(L).current_yarn = yarn_index(L, lua_tostring(L, 1));
+  script_of(L).current_yarn = yarn_index(L, text_of(L, 1));
   return 0;
 }
 
@@ -417,5 +434,34 @@ constexpr Verb verbs[] = {
 }  // namespace
 
 std::span<const Verb> verb_table() { return verbs; }
+
+int verb_entry(lua_State* L) {
+  const Verb& verb = *static_cast<const Verb*>(lua_touserdata(L, lua_upvalueindex(1)));
+  Script& s = script_of(L);
+  // A verb reading its arguments can run the script's metamethods; one that called a
+  // verb would change the pattern under the verb still reading it.
+  if (s.running_verb != nullptr)
+    fail(L, std::string(verb.name) + " was called while " + s.running_verb +
+                " was still running (from a metamethod of its arguments); call the pattern's verbs from the script "
+                "itself");
+  charge(L, 100);
+  // require runs a module, whose own lines call verbs: it does not hold the others off.
+  const bool holds = verb.function != require_verb;
+  struct Hold {
+    Script& s;
+    bool on;
+    ~Hold() {
+      if (on) s.running_verb = nullptr;
+    }
+  } hold_verbs{s, holds};
+  if (holds) s.running_verb = verb.name;
+  try {
+    return verb.function(L);
+  } catch (const std::bad_alloc&) {  // the C++ side out of memory: a stop like the Lua side's
+    stop(L, Stop::memory);
+  } catch (const std::length_error&) {
+    stop(L, Stop::memory);
+  }
+}
 
 }  // namespace knitc::runtime

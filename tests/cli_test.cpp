@@ -162,10 +162,14 @@ TEST(Cli, CommandLineMisuseExitsTwo) {
         "build patterns/jersey.lua" + out + " --view hologram", "build patterns/jersey.lua" + out + " --sides 2",
         "build patterns/jersey.lua" + out + " --tolerance 0", "build patterns/jersey.lua" + out + " --loop-model lumpy",
         "build patterns/jersey.lua" + out + " --relax maybe", "build patterns/jersey.lua" + out + " --edges sticky",
-        "build no/such/pattern.lua" + out, "build patterns/jersey.lua -o " + quoted(dir / "no/such/dir/x.glb"),
         "build patterns/jersey.lua" + out + " --centreline " + quoted(dir / "x.glb"),
         std::string("build patterns/jersey.lua -o patterns/jersey.lua"),
-        std::string("render patterns/jersey.lua -o ./patterns/../patterns/jersey.lua")}) {
+        std::string("render patterns/jersey.lua -o ./patterns/../patterns/jersey.lua"),
+        "build patterns/jersey.lua" + out + " --tolerance nan", "build patterns/jersey.lua" + out + " --tolerance inf",
+        "render patterns/jersey.lua -o " + quoted(dir / "x.png") + " --size 4294967312x4294967312",
+        "render patterns/jersey.lua -o " + quoted(dir / "x.png") + " --size 64x48x", std::string("bench --swatch 10x-5"),
+        "build patterns/jersey.lua" + out + " --max-seconds nan",
+        "build patterns/jersey.lua" + out + " --centreline " + quoted(dir / "sub/../x.glb")}) {
     const auto r = test::run_knitc(args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_FALSE(r.err.empty()) << args;

@@ -173,7 +173,7 @@ TEST(Checks, LongFloatsAreWarnedAbout) {
       "t.lua");
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(r.warnings[0],
-            "warning: t.lua:4: row 2 slips 8 stitches in a row: a float of 40 mm, over the 25 mm that wears well; "
+            "t.lua:4: warning: row 2 slips 8 stitches in a row: a float of 40 mm, over the 25 mm that wears well; "
             "break the run of slips");
   const auto stranded = runtime::run_pattern(
       "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 }, B = { diameter = 1 } } }\n"

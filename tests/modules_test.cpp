@@ -72,7 +72,7 @@ std::string exports_of(const std::string& module) {
   const std::string message = error_of(
       "local names = {}\nfor name in pairs(require \"" + module + "\") do names[#names + 1] = name end\n"
       "table.sort(names)\nerror(table.concat(names, \" \"), 0)\n");
-  return message;
+  return message.substr(message.find(": ") + 2);  // after "t.lua:4: "
 }
 
 TEST(ModulesLibrary, ExportsExactlyTheFunctionsTestedHere) {

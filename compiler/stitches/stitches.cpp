@@ -295,9 +295,14 @@ int edit_distance(std::string_view a, std::string_view b) {
 }
 
 std::string nearest_stitch_name(std::string_view word) {
+  // No spelling is near a word many times its length; its start is what the hint can use
+  // (and a megabyte of text must not cost a megabyte squared).
+  word = word.substr(0, 48);
   std::string best;
   int best_distance = 1 << 30;
   for (const auto& [spelling, id] : spellings()) {
+    const auto gap = static_cast<int>(word.size() > spelling.size() ? word.size() - spelling.size() : spelling.size() - word.size());
+    if (gap >= best_distance) continue;  // the distance is at least the difference in length
     const int d = edit_distance(word, spelling);
     if (d < best_distance) {  // first in all_stitches() order wins ties: deterministic
       best_distance = d;

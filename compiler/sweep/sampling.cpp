@@ -71,4 +71,25 @@ std::vector<double> sample_parameters(const nurbs::Curve& c, double u0, double u
   return u;
 }
 
+double estimate_samples(std::span<const glm::dvec3> points, double tolerance, double radius, double max_step) {
+  // The density sample_parameters uses, with each point's curvature read off the circle
+  // through it and its neighbours (Menger curvature) and each segment's length.
+  double total = 1.0;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const double length = glm::distance(points[i], points[i + 1]);
+    double k = 0.0;
+    for (std::size_t j : {i, i + 1}) {
+      if (j == 0 || j + 1 >= points.size()) continue;
+      const glm::dvec3 a = points[j - 1], b = points[j], c = points[j + 1];
+      const double ab = glm::distance(a, b), bc = glm::distance(b, c), ca = glm::distance(c, a);
+      if (ab <= 0.0 || bc <= 0.0 || ca <= 0.0) continue;
+      k = std::max(k, 2.0 * glm::length(glm::cross(b - a, c - a)) / (ab * bc * ca));
+    }
+    const double outer = k * (1.0 + radius * k);
+    const double step = outer > 0.0 ? std::sqrt(8.0 * tolerance / outer) : INFINITY;
+    total += length / std::min(step, max_step);
+  }
+  return total;
+}
+
 }  // namespace knitc::sweep

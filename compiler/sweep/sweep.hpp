@@ -24,6 +24,12 @@ std::vector<double> sample_parameters(const nurbs::Curve& curve, double u0, doub
                                       double chord_tolerance, double radius,
                                       double max_step = std::numeric_limits<double>::infinity());
 
+// About how many samples sample_parameters would place along a curve through `points`
+// (a piece's data points), from their polygon alone: for refusing a mesh too large to
+// make before fitting its curves. Within about 20% of the count on knitc's fabrics.
+double estimate_samples(std::span<const glm::dvec3> points, double tolerance, double radius,
+                        double max_step = std::numeric_limits<double>::infinity());
+
 enum class FrameKind {
   frenet,               // tangent, principal normal, binormal: the seed paper's choice
   rotation_minimising,  // double reflection (Wang, Juttler, Zheng, Liu 2008)

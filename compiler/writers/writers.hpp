@@ -5,6 +5,7 @@
 #include <functional>
 #include <ostream>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -48,16 +49,35 @@ std::string chart_text(const Pattern& pattern);
 std::string snapshot(const Pattern& pattern, const Fabric& fabric);
 
 struct OutputFile {
-  std::string path;
+  std::string path;                          // "-" is standard output
   std::function<void(std::ostream&)> write;  // writes the file's whole content
 };
 
 // A file whose content is already in memory.
 OutputFile text_file(std::string path, std::string bytes);
 
-// Writes every file to a temporary file beside its target, then renames each into
-// place, so a failure never leaves a partial or clobbered file. Throws
-// std::runtime_error naming the path on failure, after removing the temporaries.
+// An output that could not be written. Nothing was replaced (standard output and
+// devices excepted: what they were sent cannot be taken back).
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Writes the files all or nothing. Each regular file goes to a temporary beside it
+// (".knitc-" and a random suffix, made with O_EXCL, with the old file's mode or
+// 0666 & ~umask) and only when every temporary is whole, and standard output and any
+// device or FIFO target (written in place, never replaced) have been written, are they
+// renamed into place; a failed rename puts back the files already renamed. A symlink
+// target is written through (the link stays); a folder or a read-only file is refused.
+// Throws OutputError naming the path, after removing the temporaries.
 void write_files(std::span<const OutputFile> files);
+
+// Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGQUIT that remove the
+// temporaries being written, then end the process as the signal would have.
+void remove_temporaries_on_signals();
+
+// What a path names, for telling whether two paths are one file: the device and inode
+// of an existing file, else its absolute path with symlinks and ".." resolved.
+std::string file_identity(const std::string& path);
 
 }  // namespace knitc::writers

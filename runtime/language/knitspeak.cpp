@@ -12,6 +12,8 @@ namespace knitc::language {
 namespace {
 
 constexpr int max_row_number = 100'000;
+constexpr std::size_t max_block_rows = 100'000;             // rows a block expands to
+constexpr std::size_t max_block_text_bytes = 16u << 20;     // bytes of those rows' texts
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -28,8 +30,10 @@ std::string_view without_bullet(std::string_view s) {
 }
 
 // The words of a number list, "1, 5, and 9", "1-3 and 8-10", "from 1 to 2": every number,
-// or nothing if the text is anything else.
-std::optional<std::vector<int>> numbers(std::string_view text) {
+// or nothing if the text is anything else. A list that is one but cannot be honoured (a
+// row past max_row_number, "2-" with no end, "9-3") also gives nothing, and `problem`
+// says why: that is an error, not a line to skip.
+std::optional<std::vector<int>> numbers(std::string_view text, std::string& problem) {
   std::string t = lower(text);
   for (std::string_view dash : {"\u2013", "\u2014"}) {  // en and em dashes as ranges
     for (std::size_t at; (at = t.find(dash)) != std::string::npos;) t.replace(at, dash.size(), "-");
@@ -50,25 +54,53 @@ std::optional<std::vector<int>> numbers(std::string_view text) {
   }
   flush();
   std::vector<int> out;
-  auto number = [](const std::string& w) -> std::optional<int> {
+  const std::string last = std::to_string(max_row_number);
+  auto digits = [](const std::string& w) {
+    return !w.empty() && std::all_of(w.begin(), w.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+  };
+  auto number = [&](const std::string& w) -> std::optional<int> {
+    if (!digits(w)) return std::nullopt;
     int v = 0;
     const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
-    if (ec != std::errc() || end != w.data() + w.size() || v < 1 || v > max_row_number) return std::nullopt;
+    if (ec != std::errc() || v > max_row_number) {
+      problem = "row " + (w.size() > 12 ? w.substr(0, 12) + "..." : w) + " is past row " + last +
+                ", the last a knitspeak text may number";
+      return std::nullopt;
+    }
+    if (v < 1) {
+      problem = "rows are numbered from 1, not " + w;
+      return std::nullopt;
+    }
     return v;
   };
+  auto is_range_word = [](const std::string& w) { return w == "-" || w == "to" || w == "through"; };
   for (std::size_t i = 0; i < words.size(); ++i) {
     if (words[i] == "and" || words[i] == "from") continue;
     const auto a = number(words[i]);
     if (!a) return std::nullopt;
-    if (i + 2 < words.size() && (words[i + 1] == "-" || words[i + 1] == "to" || words[i + 1] == "through")) {
+    if (i + 1 < words.size() && is_range_word(words[i + 1])) {
+      if (i + 2 >= words.size() || !digits(words[i + 2])) {
+        problem = "the range " + words[i] + "-" + " has no last row";
+        return std::nullopt;
+      }
       const auto b = number(words[i + 2]);
-      if (!b || *b < *a) return std::nullopt;
-      if (out.size() + static_cast<std::size_t>(*b - *a) >= static_cast<std::size_t>(max_row_number)) return std::nullopt;
+      if (!b) return std::nullopt;
+      if (*b < *a) {
+        problem = "the range " + words[i] + "-" + words[i + 2] + " runs backwards";
+        return std::nullopt;
+      }
+      if (out.size() + static_cast<std::size_t>(*b - *a) >= static_cast<std::size_t>(max_row_number)) {
+        problem = "the rows listed come to more than " + last;
+        return std::nullopt;
+      }
       for (int n = *a; n <= *b; ++n) out.push_back(n);
       i += 2;
       continue;
     }
-    if (out.size() >= static_cast<std::size_t>(max_row_number)) return std::nullopt;
+    if (out.size() >= static_cast<std::size_t>(max_row_number)) {
+      problem = "the rows listed come to more than " + last;
+      return std::nullopt;
+    }
     out.push_back(*a);
   }
   if (out.empty()) return std::nullopt;
@@ -76,7 +108,7 @@ std::optional<std::vector<int>> numbers(std::string_view text) {
 }
 
 // "rows 1-4", "rnds 3 and 4", "from 1 to 2" after "repeat": the rows, if that is what it says.
-std::optional<std::vector<int>> repeated_rows(std::string_view body) {
+std::optional<std::vector<int>> repeated_rows(std::string_view body, std::string& problem) {
   std::string t = lower(trim(body));
   while (!t.empty() && (t.back() == '.' || std::isspace(static_cast<unsigned char>(t.back())))) t.pop_back();
   for (std::string_view verb : {"repeat ", "rep ", "work "}) {
@@ -86,7 +118,7 @@ std::optional<std::vector<int>> repeated_rows(std::string_view body) {
       if (rest.rfind(noun, 0) == 0) {
         rest = rest.substr(noun.size());
         // "repeat rows 1-4 once more", "... twice" are not read: once, where it stands.
-        return numbers(rest);
+        return numbers(rest, problem);
       }
     }
   }
@@ -100,7 +132,7 @@ struct Label {
 };
 
 // "Row 1 (RS): ...", "Rnds 2 and 4: ...", "Rows 1, 3 (WS). ..."
-std::optional<Label> label(std::string_view line) {
+std::optional<Label> label(std::string_view line, std::string& problem) {
   const std::string l = lower(line);
   std::size_t at = 0;
   bool found = false;
@@ -124,7 +156,7 @@ std::optional<Label> label(std::string_view line) {
       head.erase(m, std::string_view(mark).size());
     }
   }
-  const auto rows = numbers(head);
+  const auto rows = numbers(head, problem);
   if (!rows) return std::nullopt;
   out.rows = *rows;
   out.body = std::string(trim(line.substr(colon + 1)));
@@ -169,7 +201,24 @@ std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, st
   int next_number = 0;                 // the next numbered row to work; 0 until the first
   std::optional<KnitspeakNote> error;
 
+  // The rows a block may expand to, and the bytes of their texts: a few lines of
+  // "Repeat rows 1-99999." must not fill memory before a single row is worked.
+  std::size_t text_bytes = 0;
+  auto room = [&](int line, std::size_t bytes) {
+    text_bytes += bytes;
+    if (out.rows.size() >= max_block_rows) {
+      error = KnitspeakNote{line, "the text comes to more than " + std::to_string(max_block_rows) + " rows"};
+      return false;
+    }
+    if (text_bytes > max_block_text_bytes) {
+      error = KnitspeakNote{line, "the text's rows come to more than " + std::to_string(max_block_text_bytes >> 20) +
+                                      " MiB of instructions"};
+      return false;
+    }
+    return true;
+  };
   auto emit = [&](int number, const Given& g) {
+    if (!room(g.line, g.text.size())) return;
     KnitspeakRow r;
     r.line = g.line;
     r.number = number;
@@ -210,8 +259,18 @@ std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, st
     std::string_view line = without_bullet(trim(raw));
     if (line.empty() || is_fence(line)) continue;
 
-    if (const auto l = label(line)) {
-      const auto again = repeated_rows(l->body);
+    std::string problem;  // a row list that cannot be honoured
+    const auto l = label(line, problem);
+    if (!problem.empty()) {
+      error = KnitspeakNote{line_number, problem};
+      break;
+    }
+    if (l) {
+      const auto again = repeated_rows(l->body, problem);
+      if (!problem.empty()) {
+        error = KnitspeakNote{line_number, problem};
+        break;
+      }
       std::optional<int> count;
       const std::string text = again ? std::string() : without_count(l->body, count);
       if (!again && text.empty()) {
@@ -233,7 +292,12 @@ std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, st
       }
       continue;
     }
-    if (const auto again = repeated_rows(line)) {  // "Repeat rows 3-6." where it stands
+    const auto again = repeated_rows(line, problem);
+    if (!problem.empty()) {
+      error = KnitspeakNote{line_number, problem};
+      break;
+    }
+    if (again) {  // "Repeat rows 3-6." where it stands
       flush();
       for (int n : *again) {
         const auto it = emitted.find(n);
@@ -241,6 +305,7 @@ std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, st
           error = KnitspeakNote{line_number, "repeats row " + std::to_string(n) + ", which has not been given before this line"};
           break;
         }
+        if (!room(line_number, out.rows[it->second].text.size())) break;
         KnitspeakRow r = out.rows[it->second];
         r.line = line_number;
         r.repeat = true;
@@ -250,8 +315,9 @@ std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, st
     }
     std::optional<int> count;
     const std::string text = without_count(std::string(line), count);
-    if (!text.empty() && parse_row(text, yarn_ids).index() == 0) {  // an unnumbered row
+    if (!text.empty() && parse_row(text, yarn_ids, false).index() == 0) {  // an unnumbered row
       flush();
+      if (!room(line_number, text.size())) break;
       KnitspeakRow r;
       r.line = line_number;
       r.text = text;

@@ -67,7 +67,8 @@ std::string stitch_hint(const std::string& written) {
 
 class Parser {
  public:
-  Parser(std::string_view text, std::span<const std::string> yarns) : text_(text), tokens_(tokenize(text)), yarns_(yarns) {}
+  Parser(std::string_view text, std::span<const std::string> yarns, bool hints = true)
+      : text_(text), tokens_(tokenize(text)), yarns_(yarns), hints_(hints) {}
 
   std::variant<RowText, TextError> row() {
     // Brackets first: an unclosed group would otherwise read as a strange stitch.
@@ -355,7 +356,7 @@ class Parser {
           return false;
         }
       }
-      fail("unknown stitch '" + written + "'" + stitch_hint(written));
+      fail("unknown stitch '" + written + "'" + (hints_ ? stitch_hint(written) : std::string()));
       return false;
     }
     if (explicit_count && !stitch(*id).counted) {
@@ -389,6 +390,7 @@ class Parser {
   std::string_view text_;
   std::vector<Token> tokens_;
   std::span<const std::string> yarns_;
+  bool hints_ = true;
   std::size_t pos_ = 0;
   int depth_ = 0;
   bool last_counted_ = false;  // the last stitch read had a count written on it ("p2")
@@ -416,8 +418,11 @@ std::string quote_row(std::string_view text) {
   return "\"" + std::string(text.substr(0, longest)) + "...\"";
 }
 
-std::variant<RowText, TextError> parse_row(std::string_view text, std::span<const std::string> yarn_ids) {
-  return Parser(text, yarn_ids).row();
+std::variant<RowText, TextError> parse_row(std::string_view text, std::span<const std::string> yarn_ids, bool hints) {
+  if (text.size() > max_row_text_bytes)
+    return TextError{"the row's text is " + std::to_string(text.size() >> 10) + " KiB; a row is at most " +
+                     std::to_string(max_row_text_bytes >> 10) + " KiB of instructions"};
+  return Parser(text, yarn_ids, hints).row();
 }
 
 }  // namespace knitc::language

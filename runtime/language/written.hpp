@@ -59,8 +59,12 @@ struct RowText {
 };
 
 // Parses a row's text. `yarn_ids` are the declared yarns a stitch may name after it
-// ("k2 B"); their index is the Worked::yarn of such a stitch.
-std::variant<RowText, TextError> parse_row(std::string_view text, std::span<const std::string> yarn_ids);
+// ("k2 B"); their index is the Worked::yarn of such a stitch. Without `hints` an unknown
+// stitch's message has no "did you mean" (for callers that only ask whether a line is a
+// row: the hint costs a search of every spelling). A text over max_row_text_bytes is an
+// error.
+inline constexpr std::size_t max_row_text_bytes = 1u << 20;
+std::variant<RowText, TextError> parse_row(std::string_view text, std::span<const std::string> yarn_ids, bool hints = true);
 
 // Works a parsed row across `live` stitches, in working order: a text without a repeat
 // is repeated until the stitches are used; a *repeat fills what the fixed stitches leave.

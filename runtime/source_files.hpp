@@ -1,0 +1,22 @@
+// Reading the text of a pattern or module file. Internal to the runtime.
+#pragma once
+
+#include <string>
+
+#include "runtime.hpp"
+
+namespace knitc::runtime {
+
+// A file over the size a pattern or module may have. what() is "path:1: ...".
+class SourceTooLarge : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The text of the regular file at `path`, at most `max_bytes` long, with a UTF-8 byte
+// order mark dropped and a first line starting with '#' blanked (as Lua's loader
+// does). Throws FileError if it cannot be read or is not a regular file (a FIFO, a
+// device, a folder), SourceTooLarge if it is too long. Never blocks on a FIFO.
+std::string read_source(const std::string& path, std::size_t max_bytes = max_source_bytes);
+
+}  // namespace knitc::runtime

@@ -1,0 +1,6 @@
+-- match with three lazy captures
+-- expect: 1 too long
+pattern { name = "h", gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = "dk" } }, knitting = "flat" }
+cast_on(8)
+local s = ("a"):rep(3000)
+local _ = s:match("(.-)(.-)(.-)b")

@@ -1,0 +1,6 @@
+-- gmatch of nested lazy items
+-- expect: 1 too long
+pattern { name = "h", gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = "dk" } }, knitting = "flat" }
+cast_on(8)
+local s = ("a"):rep(3000)
+for _ in s:gmatch(".-.-.-b") do end

@@ -1,0 +1,6 @@
+-- a plain find over a 4 MiB string, forever
+-- expect: 1 too long
+pattern { name = "h", gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = "dk" } }, knitting = "flat" }
+cast_on(8)
+local s = ("x"):rep(4 * 1024 * 1024 - 64)
+while true do local _ = s:find("y", 1, true) end

@@ -1,0 +1,5 @@
+-- an endless goto
+-- expect: 1 too long
+pattern { name = "h", gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = "dk" } }, knitting = "flat" }
+cast_on(8)
+::again:: goto again
