@@ -108,6 +108,24 @@ std::string source_file(const Pattern& pattern) {
   return pattern.courses.empty() ? pattern.name : pattern.courses.front().where.file;
 }
 
+// "file:line: " of the course at which the fabric passes `share` of its loops: where a
+// fabric too large to make grows past the limit, the line a designer would shorten.
+std::string where_it_passes(const Pattern& pattern, double share) {
+  if (pattern.courses.empty()) return source_file(pattern) + ":1: ";
+  double total = static_cast<double>(pattern.cast_on);
+  for (const Course& c : pattern.courses) total += static_cast<double>(c.ops.size());
+  double so_far = static_cast<double>(pattern.cast_on);
+  const Course* at = &pattern.courses.back();
+  for (const Course& c : pattern.courses) {
+    so_far += static_cast<double>(c.ops.size());
+    if (so_far >= share * total) {
+      at = &c;
+      break;
+    }
+  }
+  return at->where.file + ":" + std::to_string(std::max(at->where.line, 1)) + ": ";
+}
+
 mesh::Mode primitive_mode(View view) {
   switch (view) {
     case View::surface: return mesh::Mode::triangles;
@@ -213,20 +231,20 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
   std::uint64_t loops = static_cast<std::uint64_t>(pattern.cast_on);
   for (const Course& c : pattern.courses) loops += c.ops.size();
   if (loops > max_loops)
-    throw CompileError(source_file(pattern) + ": the fabric has " + std::to_string(loops) +
+    throw CompileError(where_it_passes(pattern, static_cast<double>(max_loops) / static_cast<double>(loops)) + "the fabric has " + std::to_string(loops) +
                        " loops; knitc lays out at most " + std::to_string(max_loops) + " (knitc check and chart take more)");
   // Before sampling, a cautious estimate (half the rings the plain loop needs, about 55
   // at 1% tolerance, scaling as tolerance^-1/2) turns away the hopeless in a moment.
   const double rings_per_loop = 0.5 * 55.0 * std::sqrt(0.01 / options.chord_tolerance);
   if (static_cast<double>(loops) * rings_per_loop * (options.sides + 1) > static_cast<double>(max_vertices))
-    throw CompileError(source_file(pattern) + ": " + std::to_string(loops) + " loops at this quality make a mesh " +
+    throw CompileError(where_it_passes(pattern, 1.0) + std::to_string(loops) + " loops at this quality make a mesh " +
                        "over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +
                        " million vertices; knit a smaller piece, or use --quality draft");
   layout::Layout layout;
   try {
     layout = layout::lay_out(pattern);
   } catch (const std::invalid_argument& e) {  // the runtime checks counts first: a caller's bug
-    throw CompileError(source_file(pattern) + ": " + e.what());
+    throw CompileError(where_it_passes(pattern, 1.0) + e.what());
   }
   return compile(pattern, std::move(layout), options);
 }
@@ -246,7 +264,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   }
   // (On the library's fabrics the estimate is 0.87 to 1.05 of the count.)
   if (estimate > static_cast<double>(max_vertices))
-    throw CompileError(source_file(pattern) + ": the mesh would have about " + std::to_string(static_cast<long long>(estimate / 1e6)) +
+    throw CompileError(where_it_passes(pattern, static_cast<double>(max_vertices) / estimate) + "the mesh would have about " + std::to_string(static_cast<long long>(estimate / 1e6)) +
                        " million vertices, over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +
                        " million; knit a smaller piece, or use --quality draft");
   if (options.relax) {
@@ -278,7 +296,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   for (const CurvePiece& p : fabric.pieces)
     vertices += strand_count(pattern.yarns[p.path.yarn]) * (p.samples.size() + 2) * static_cast<std::uint64_t>(options.sides + 1);
   if (vertices > max_vertices)
-    throw CompileError(source_file(pattern) + ": the mesh would have " + std::to_string(vertices / 1'000'000) +
+    throw CompileError(where_it_passes(pattern, static_cast<double>(max_vertices) / static_cast<double>(vertices)) + "the mesh would have " + std::to_string(vertices / 1'000'000) +
                        " million vertices, over knitc's limit of " + std::to_string(max_vertices / 1'000'000) +
                        " million; knit a smaller piece, or use --quality draft");
   fabric.mesh = build_mesh(pattern, fabric.pieces, options);

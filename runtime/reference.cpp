@@ -39,8 +39,10 @@ std::string language_reference() {
       "wrong-side rows, worked left to right and seen from the back: a k written on a wrong-side row shows as p on "
       "the face, exactly the bookkeeping a knitter does. Charts are drawn as the face looks and need none of it.\n\n"
       "Scripts run in a sandbox: no files (but `require` of library modules), no operating system, no debug "
-      "library, no bytecode; an instruction budget and a memory cap stop runaway scripts; `math.random` is seeded "
-      "from `pattern{ seed = }` or `--seed` (default 0), so a script gives the same fabric every run.\n\n"
+      "library, no bytecode, no finalisers (`__gc`); a work budget, a deadline and a memory cap stop runaway "
+      "scripts, and `pcall` cannot catch them; strings are at most 4 MiB. `math.random` is seeded from "
+      "`pattern{ seed = }` or `--seed` (default 0), and `pairs` visits keys in a fixed order (booleans, numbers, "
+      "then strings), so a script gives the same fabric every run. docs/security.md has the details.\n\n"
       "## Verbs\n\n";
   for (const Verb& v : verb_table()) {
     md += "### " + std::string(v.name) + "\n\n`" + v.usage + "`\n\n" + v.summary + "\n\n```lua\n" + v.example + "\n```\n\n";

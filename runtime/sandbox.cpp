@@ -13,7 +13,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr std::size_t large_block = 64u << 10;  // a block this large turns on hooking every instruction
+constexpr std::size_t large_block = 64u << 10;  // a block this large makes the hook come often
+constexpr int large_every = 10;                 // instructions between hooks from then on
 constexpr std::uint64_t bytes_per_unit = 16;  // allocation charged as work
 // The error object of a stop: a light userdata needs no memory, which a stopped
 // script no longer gets.
@@ -88,14 +89,25 @@ void* allocate(void* ud, void* ptr, std::size_t old_size, std::size_t new_size) 
       mark_stopped(s, Stop::string, s.last, " (" + mib(new_size) + " MiB)");
       return nullptr;
     }
-    if (s.bytes_in_use + s.host_bytes + growth > s.limits.memory_bytes) return nullptr;  // Lua collects and retries
+    // Past the cap, a small step is let through and the hook comes at the next
+    // instruction: it collects the garbage and, if the script still holds too much, stops
+    // it there, with its line. A step past the slack is refused at once (Lua collects and
+    // retries, then raises a memory error, told at the line the hook last saw).
+    const std::size_t held = s.bytes_in_use + s.host_bytes + growth;
+    if (held > s.limits.memory_bytes) {
+      if (held > s.limits.memory_bytes + std::min<std::size_t>(s.limits.memory_bytes / 16, 8u << 20)) return nullptr;
+      if (!s.over_cap) {
+        s.over_cap = true;
+        if (s.running != nullptr) lua_sethook(s.running, count_hook, LUA_MASKCOUNT, 1);
+      }
+    }
     // One VM instruction on a large string or table (a comparison, a next() over empty
-    // slots) can take milliseconds: from the first large block on, the hook runs at
-    // every instruction, so the deadline is seen between any two. lua_sethook only sets
-    // fields, so it is safe here.
-    if (new_size >= large_block && s.hook_every != 1) {
-      s.hook_every = 1;
-      if (s.running != nullptr) lua_sethook(s.running, count_hook, LUA_MASKCOUNT, 1);
+    // slots) can take tens of milliseconds: from the first large block on, the hook runs
+    // every ten instructions, so the deadline is seen within a few of them. lua_sethook
+    // only sets fields, so it is safe here.
+    if (new_size >= large_block && s.hook_every != large_every) {
+      s.hook_every = large_every;
+      if (s.running != nullptr) lua_sethook(s.running, count_hook, LUA_MASKCOUNT, large_every);
     }
     const std::uint64_t before = s.bytes_made;
     s.bytes_made += growth;
@@ -113,9 +125,20 @@ void* allocate(void* ud, void* ptr, std::size_t old_size, std::size_t new_size) 
   return block;
 }
 
+// After an allocation past the cap: the garbage collected, then either the script is
+// under the cap again or it stops at this line.
+void settle_memory(lua_State* L) {
+  SandboxState& s = sandbox_of(L);
+  s.over_cap = false;
+  lua_gc(L, LUA_GCCOLLECT);
+  if (s.bytes_in_use + s.host_bytes > s.limits.memory_bytes) stop(L, Stop::memory);
+  lua_sethook(L, count_hook, LUA_MASKCOUNT, s.hook_every);
+}
+
 void count_hook(lua_State* L, lua_Debug* ar) {
   SandboxState& s = sandbox_of(L);
   if (lua_getinfo(L, "Sl", ar) != 0 && ar->currentline > 0) remember(s, ar->source, ar->currentline);
+  if (s.over_cap && s.stop == Stop::none) settle_memory(L);
   charge(L, static_cast<std::uint64_t>(lua_gethookcount(L)));
 }
 

@@ -31,6 +31,7 @@ struct SandboxState {
   std::size_t host_bytes = 0;     // held by the bindings for the script (courses, texts)
   std::uint64_t bytes_made = 0;   // allocated over the whole run, charged as work
   std::uint64_t work = 0;         // units charged: instructions and library steps
+  bool over_cap = false;          // an allocation went past the cap: the next hook settles it
   std::chrono::steady_clock::time_point deadline;
   Stop stop = Stop::none;
   std::string stop_message;       // "file:line: ..." once stopped
@@ -40,7 +41,7 @@ struct SandboxState {
   const void* last_chunk = nullptr;  // the chunk name `last.file` was copied from
   std::size_t print_bytes = 0;    // written by print() so far
   lua_State* running = nullptr;   // the thread running now (the coroutine wrappers keep it)
-  int hook_every = 1000;          // instructions between count hooks; 1 once a block is large
+  int hook_every = 1000;          // instructions between count hooks; 10 once a block is large
   void* user = nullptr;           // the bindings' own state
 };
 
@@ -81,7 +82,7 @@ void open_budgeted_tables(lua_State* L);
 void open_budgeted_strings(lua_State* L);
 
 // Gives a thread the hook its state's threads have now (a resumed coroutine may have
-// been made before the state turned to hooking every instruction).
+// been made before the state turned to hooking every ten instructions).
 void hook_thread(lua_State* co);
 
 // While a coroutine runs: the state's running thread is `co`, then again the one before.

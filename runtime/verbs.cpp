@@ -381,6 +381,15 @@ int row_number_verb(lua_State* L) {
   return 1;
 }
 
+// The one side rule, for library functions: Lua keeps no copy of it.
+int right_side_verb(lua_State* L) {
+  need_pattern(L, "right_side");
+  const Script& s = script_of(L);
+  const long long row = lua_isnoneornil(L, 1) ? next_row(s) : whole_number(L, 1, "right_side's row", 1, max_loops);
+  lua_pushboolean(L, side_of(s, static_cast<int>(row)) == Side::right);
+  return 1;
+}
+
 constexpr Verb verbs[] = {
     {"pattern", pattern_verb, "pattern { name = S, gauge = {...}, yarns = {...}, knitting = \"round\"|\"flat\", seed = N }",
      "Declares the pattern, once, before anything else. gauge: { stitches = S, rows = R } per 10 cm, or "
@@ -422,8 +431,14 @@ constexpr Verb verbs[] = {
     {"knitting", knitting_verb, "knitting()", "\"flat\" or \"round\", as pattern{} declared: for library functions.",
      "if knitting() == \"flat\" then rows(2, \"k\") end"},
     {"row_number", row_number_verb, "row_number()",
-     "The number of the next row to be worked (1 for the first); in flat knitting odd rows are right-side rows.",
-     "local right_side = row_number() % 2 == 1"},
+     "The number of the next row to be worked (1 for the first). Which side a row is worked from is right_side()'s "
+     "to say: in flat knitting a first row printed (WS) makes the odd rows the wrong-side rows.",
+     "local n = row_number()"},
+    {"right_side", right_side_verb, "right_side([row])",
+     "True when the next row (or row number `row` of the piece) is worked from the right side: every row in the "
+     "round; in flat knitting the odd rows, or the even ones when row 1 was worked from the wrong side "
+     "(knitspeak's `Row 1 (WS):`).",
+     "if right_side() then row \"k\" else row \"p\" end"},
     {"bind_off", bind_off_verb, "bind_off()", "Binds off every live stitch; no rows may follow.", "bind_off()"},
     {"require", require_verb, "require(name)",
      "Loads a module of the pattern library: name.lua from the -I folders, the pattern's own lib/ folder, then "
@@ -461,6 +476,8 @@ int verb_entry(lua_State* L) {
     stop(L, Stop::memory);
   } catch (const std::length_error&) {
     stop(L, Stop::memory);
+  } catch (const std::exception& e) {  // never let a C++ exception cross Lua's frames
+    fail(L, std::string("knitc could not work this verb: ") + e.what());
   }
 }
 

@@ -81,6 +81,39 @@ TEST(ModulesLibrary, ExportsExactlyTheFunctionsTestedHere) {
   EXPECT_EQ(exports_of("lace"), "chevron eyelet_row feather_and_fan");
 }
 
+// A piece whose row 1 was worked from the wrong side (a set-up row, as knitspeak's
+// "Row 1 (WS):" says): every library function works its rows on the sides they are, and
+// its rhythm starts from the next right-side row, as a chart of the pattern would.
+TEST(ModulesLibrary, EveryFunctionWorksAfterAWrongSideFirstRow) {
+  const std::string setup = "knitspeak [[\nRow 1 (WS): Purl.\n]]\n";
+  const std::pair<int, std::pair<std::string, std::string>> cases[] = {
+      {12, {"ribs.k2p2(2)", "rows(2, \"k2, p2\")"}},
+      {10, {"ribs.k1p1(2)", "rows(2, \"k1, p1\")"}},
+      {12, {"ribs.rib(2, 2, 1)", "row \"k2, p1\" row \"k1, p2\""}},
+      {8, {"ribs.garter(2)", "rows(2, \"k\")"}},
+      {8, {"ribs.seed(2)", "row \"k1, p1\" row \"p1, k1\""}},
+      {8, {"ribs.moss(4)", "rows(2, \"p1, k1\") rows(2, \"k1, p1\")"}},
+      {14, {"cables.rope { rows = 4 }",
+            "row \"p2, C4F, p2, C4F, p2\" row \"k2, p4, k2, p4, k2\" row \"p2, k4, p2, k4, p2\" row \"k2, p4, k2, p4, k2\""}},
+      {12, {"cables.horseshoe { rows = 4 }", "row \"p2, C4B, C4F, p2\" row \"k2, p8, k2\" row \"p2, k8, p2\" row \"k2, p8, k2\""}},
+      {8, {"lace.eyelet_row(3)", "row \"k1, (yo, k2tog) x3, k1\" row \"p\" row \"k\""}},  // was p2tog on the right side
+      {8, {"lace.chevron(2)", "row \"k1, yo, k2, cdd, k2, yo\" row \"p\""}},
+      {18, {"lace.feather_and_fan(4)",
+            "row \"(k2tog) x3, (yo, k1) x6, (k2tog) x3\" row \"k\" row \"k\" row \"p\""}},
+  };
+  for (const auto& [stitches, call] : cases)
+    EXPECT_TRUE(same_fabric("flat", stitches, setup + call.first, setup + call.second)) << call.first;
+}
+
+TEST(ModulesLibrary, RightSideIsTheRuntimesRule) {
+  const auto p = run("flat", 4, "knitspeak [[\nRow 1 (WS): Purl.\n]]\n"
+                                "assert(right_side() and not right_side(1) and right_side(2) and not right_side(3))\n"
+                                "row \"k\"\nassert(not right_side())\n");
+  EXPECT_EQ(p.courses.size(), 2u);
+  EXPECT_TRUE(run("round", 4, "assert(right_side(1) and right_side(2)) row \"k\" assert(right_side())").courses.size() == 1);
+  EXPECT_TRUE(run("flat", 4, "assert(right_side() and not right_side(2)) row \"k\" assert(not right_side())").courses.size() == 1);
+}
+
 // ---- ribs ----
 
 TEST(ModulesRibs, K2p2IsTheWrittenRib) {

@@ -46,8 +46,12 @@ std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_p
     for (std::size_t j = 0; j < piece.path.loops.size(); ++j) {
       const int index = piece.path.loops[j];
       const layout::Loop& loop = fabric.layout.loops[index];
+      // The points the curve passes through for this loop, as the piece holds them: in the
+      // mesh's space (wrapped onto the tube in the round, moved when relaxed) and in the
+      // order of its samples.
       json data = json::array(), samples = json::array();
-      for (const auto& p : loop.data_points) data.push_back(xyz(p));
+      for (std::size_t k = piece.path.loop_first[j]; k <= piece.path.loop_last[j]; ++k)
+        data.push_back(xyz(piece.path.data_points[k]));
       for (std::size_t s = piece.loop_samples[j].first; s <= piece.loop_samples[j].second; ++s)
         samples.push_back(xyz(piece.frames.origin[s]));
       loops[index] = {{"course", loop.course},

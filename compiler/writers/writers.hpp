@@ -34,7 +34,9 @@ std::string glb(const mesh::Mesh& mesh, const std::string& generator, const GlbO
 // {"units":"mm","loop_model":..., "yarns":[{"id","color","points","pieces"}],
 //  "loops":[{"course","wale","stitch","yarn","data_points","samples"}]}
 // A yarn's "points" are the samples of all its pieces, piece after piece; "pieces" gives
-// each piece as [first point index, point count].
+// each piece as [first point index, point count]. A loop's "data_points" are the points
+// its stretch of curve passes through and its "samples" that stretch, both in the mesh's
+// space (in the round, wrapped onto the tube) and in the yarn's working order.
 std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_paths::LoopModel model);
 
 // The pattern's stitch chart as text: one line per course, top course first, chart

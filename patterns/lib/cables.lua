@@ -15,17 +15,18 @@
 --     centre. cross_every defaults to half the width. Stitches as for rope.
 --
 -- Only rows is required. The panel repeats across all the live stitches, and the cables
--- cross on rows cross_every - 1, 2 * cross_every - 1, ... of the whole piece (as
--- row_number() counts them), so a panel continued by a second call keeps its rhythm. In
--- flat knitting cross_every must be even: the crossings then fall on odd rows, the right
--- side, and the wrong-side rows are written k over the purls and p over the cables.
+-- cross on rows cross_every - 1, 2 * cross_every - 1, ... of the whole piece as a chart
+-- counts them (working.chart_row: its row 1 is a right-side row), so a panel continued by
+-- a second call keeps its rhythm. In flat knitting cross_every must be even: the
+-- crossings then fall on right-side rows, and the wrong-side rows are written k over the
+-- purls and p over the cables.
 -- The functions return nothing. A bad argument is an error at the line that called them.
 
 local cables = {}
 
-local row, live, knitting, row_number = row, live, knitting, row_number
+local row, live, knitting, right_side = row, live, knitting, right_side
 local working = require "working"
-local whole, shown, rows_problem, wrong_side = working.whole, working.shown, working.rows_problem, working.wrong_side
+local whole, shown, rows_problem, chart_row = working.whole, working.shown, working.rows_problem, working.chart_row
 
 -- The fields of args that the list `known` does not name, sorted, as one string; nil if
 -- none. (Sorted: the order pairs() visits them in never reaches a message.)
@@ -91,9 +92,9 @@ end
 
 local function work_panel(o, crossing)
   for _ = 1, o.rows do
-    if (row_number() + 1) % o.every == 0 then
+    if (chart_row() + 1) % o.every == 0 then
       row(panel_text(crossing, o.border, "p"))
-    elseif wrong_side() then
+    elseif not right_side() then
       row(panel_text("p" .. o.width, o.border, "k"))
     else
       row(panel_text("k" .. o.width, o.border, "p"))

@@ -16,20 +16,21 @@
 --                            ridge). A multiple of 18; rows a multiple of 4 ends a repeat.
 --
 -- Each works `rows` rows (a whole number, 1 or more) and returns nothing. Chevron and
--- feather and fan follow the row numbers of the whole piece (row_number()), as a chart
--- would: their lace rows are the odd rows, the right side in flat knitting, and a second
--- call continues the first. Flat or in the round, the face comes out the same. A bad
--- argument is an error at the line that called the function.
+-- feather and fan follow the row numbers of the whole piece as a chart counts them
+-- (working.chart_row: its row 1 is a right-side row): their lace rows are the chart's odd
+-- rows, the right side in flat knitting, and a second call continues the first. Flat or
+-- in the round, the face comes out the same. A bad argument is an error at the line that
+-- called the function.
 
 local lace = {}
 
-local row, live, knitting, row_number = row, live, knitting, row_number
+local row, live, right_side = row, live, right_side
 local working = require "working"
-local whole, shown, rows_problem, wrong_side = working.whole, working.shown, working.rows_problem, working.wrong_side
+local whole, shown, rows_problem, chart_row = working.whole, working.shown, working.rows_problem, working.chart_row
 
 -- One row whose face is all knit (stockinette) or all purl.
 local function plain_row(face_knit)
-  row((face_knit ~= wrong_side()) and "k" or "p")
+  row((face_knit == right_side()) and "k" or "p")
 end
 
 -- What is wrong with the live count for a pattern repeating over `multiple`, or nil.
@@ -44,10 +45,10 @@ function lace.eyelet_row(rows)
   if rows == nil then rows = 1 end
   local problem = rows_problem("lace.eyelet_row", rows) or multiple_problem("lace.eyelet_row", 2, 4)
   if problem then error(problem, 2) end
-  if wrong_side() then
-    row "p1, *yo, p2tog; rep from * to last 1 st, p1"
-  else
+  if right_side() then
     row "k1, *yo, k2tog; rep from * to last 1 st, k1"
+  else
+    row "p1, *yo, p2tog; rep from * to last 1 st, p1"
   end
   for _ = 2, rows do plain_row(true) end
 end
@@ -56,7 +57,7 @@ function lace.chevron(rows)
   local problem = rows_problem("lace.chevron", rows) or multiple_problem("lace.chevron", 8, 8)
   if problem then error(problem, 2) end
   for _ = 1, rows do
-    if row_number() % 2 == 1 then
+    if chart_row() % 2 == 1 then
       row "*k1, yo, k2, cdd, k2, yo; rep from *"
     else
       plain_row(true)
@@ -68,7 +69,7 @@ function lace.feather_and_fan(rows)
   local problem = rows_problem("lace.feather_and_fan", rows) or multiple_problem("lace.feather_and_fan", 18, 18)
   if problem then error(problem, 2) end
   for _ = 1, rows do
-    local step = (row_number() - 1) % 4 + 1
+    local step = (chart_row() - 1) % 4 + 1
     if step == 3 then
       row "*(k2tog) x3, (yo, k1) x6, (k2tog) x3; rep from *"
     else

@@ -16,18 +16,18 @@
 --                                 more. For UK moss stitch call ribs.seed.
 --
 -- Each function works `rows` rows (a whole number, 1 or more) and returns nothing. The
--- face comes out the same flat or in the round: the functions ask knitting() and
--- row_number() and write a wrong-side row as a knitter does (k where the face shows p).
--- Garter, seed and moss follow the row numbers of the whole piece, as a chart would (odd
--- rows of garter show knit, even rows the purl ridge), so two calls in a row continue one
--- fabric. A bad argument is an error at the line that called the function.
+-- face comes out the same flat or in the round: the functions ask right_side() and
+-- write a wrong-side row as a knitter does (k where the face shows p). Garter, seed and
+-- moss follow the row numbers of the whole piece as a chart counts them (odd rows of
+-- garter show knit, even rows the purl ridge; working.chart_row), so two calls in a row
+-- continue one fabric. A bad argument is an error at the line that called the function.
 -- No twisted rib: the stitch vocabulary has no "through the back loop" yet.
 
 local ribs = {}
 
-local row, live, knitting, row_number = row, live, knitting, row_number
+local row, live, right_side = row, live, right_side
 local working = require "working"
-local whole, shown, rows_problem, wrong_side = working.whole, working.shown, working.rows_problem, working.wrong_side
+local whole, shown, rows_problem, chart_row = working.whole, working.shown, working.rows_problem, working.chart_row
 
 local function sts(n)
   return n == 1 and "1 st" or n .. " sts"
@@ -56,7 +56,7 @@ local function work_rib(name, rows, a, b)
     return ("%s needs a multiple of %d stitches, or of %d plus %d; %d are live"):format(name, a + b, a + b, a, n)
   end
   for _ = 1, rows do
-    if wrong_side() then row(ws) else row(rs) end
+    if right_side() then row(rs) else row(ws) end
   end
   return nil
 end
@@ -83,9 +83,9 @@ function ribs.garter(rows)
   local problem = rows_problem("ribs.garter", rows)
   if problem then error(problem, 2) end
   for _ = 1, rows do
-    local face_knit = row_number() % 2 == 1
+    local face_knit = chart_row() % 2 == 1
     -- A row shows knit on the face when worked k from the right side or p from the wrong.
-    row((face_knit ~= wrong_side()) and "k" or "p")
+    row((face_knit == right_side()) and "k" or "p")
   end
 end
 
@@ -94,7 +94,7 @@ local function k1p1_row(n, right_knit)
   if n % 2 == 0 then
     -- On an even count the same text shows the same face from either side.
     row(right_knit and "k1, p1" or "p1, k1")
-  elseif right_knit ~= wrong_side() then
+  elseif right_knit == right_side() then
     row("k1, *p1, k1; rep from *")
   else
     row("p1, *k1, p1; rep from *")
@@ -108,7 +108,7 @@ local function work_k1p1_texture(name, rows, right_knit_on)
   local n = live()
   if n == 1 then return name .. " needs at least 2 stitches; 1 is live" end
   for _ = 1, rows do
-    k1p1_row(n, right_knit_on(row_number()))
+    k1p1_row(n, right_knit_on(chart_row()))
   end
   return nil
 end

@@ -4,11 +4,14 @@
 --   working.whole(value, least)     value as a whole number of at least `least`, or nil
 --   working.shown(value)            a value as an error message shows it
 --   working.rows_problem(name, n)   what is wrong with a row count, or nil
---   working.wrong_side()            true when the next row is worked from the wrong side
+--   working.chart_row()             the next row's number as a chart of the pattern
+--                                   counts it: from a right-side row 1
+--
+-- Which side a row is worked from is the runtime's rule alone: right_side().
 
 local working = {}
 
-local knitting, row_number = knitting, row_number
+local row_number, right_side = row_number, right_side
 
 function working.whole(value, least)
   if type(value) ~= "number" then return nil end
@@ -28,9 +31,11 @@ function working.rows_problem(name, rows)
   return name .. ": rows must be a whole number from 1 up, not " .. working.shown(rows)
 end
 
--- Flat knitting, an even row.
-function working.wrong_side()
-  return knitting() == "flat" and row_number() % 2 == 0
+-- The library's rhythms (crossings, lace rows, seed's phase) are a chart's: its row 1 is
+-- a right-side row. A piece whose row 1 was worked from the wrong side (a set-up row)
+-- starts the chart one row later.
+function working.chart_row()
+  return row_number() + (right_side(1) and 0 or 1)
 end
 
 return working
