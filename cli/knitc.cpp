@@ -16,6 +16,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <variant>
 #include <vector>
@@ -101,11 +102,25 @@ class Progress {
   std::chrono::steady_clock::time_point start_;
 };
 
-std::variant<knitc::Fabric, int> compile(const knitc::Pattern& pattern, const Args& args) {
+// The relaxation's wall time, told by the stage's progress: times are the caller's.
+struct RelaxClock {
+  std::chrono::steady_clock::time_point start;
+  double seconds = 0.0;
+  void operator()(const char* stage, double fraction) {
+    if (std::string_view(stage) != "relax") return;
+    if (fraction == 0.0) start = std::chrono::steady_clock::now();
+    else seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+};
+
+std::variant<knitc::Fabric, int> compile(const knitc::Pattern& pattern, const Args& args, RelaxClock& clock) {
   try {
     Progress progress(!args.quiet);
     knitc::CompileOptions options = args.compile;
-    options.progress = [&progress](const char* stage, double fraction) { progress(stage, fraction); };
+    options.progress = [&](const char* stage, double fraction) {
+      progress(stage, fraction);
+      clock(stage, fraction);
+    };
     return knitc::compile(pattern, options);
   } catch (const knitc::CompileError& e) {
     report(e.what());
@@ -123,7 +138,7 @@ int write(const std::vector<knitc::writers::OutputFile>& files) {
   }
 }
 
-void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric) {
+void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, double relax_seconds) {
   std::size_t vertices = 0, elements = 0;
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (const auto& p : fabric.mesh.primitives) {
@@ -143,20 +158,20 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric) {
              vertices, elements);
   fmt::print(stderr, "bounds mm   [{:.3f}, {:.3f}, {:.3f}] .. [{:.3f}, {:.3f}, {:.3f}]\n", lo.x, lo.y, lo.z, hi.x, hi.y,
              hi.z);
-  const auto m = knitc::measure::measure(pattern, fabric);
+  const auto m = knitc::measure::measure(pattern, fabric.layout, fabric.pieces);
   for (std::size_t y = 0; y < pattern.yarns.size(); ++y)
     fmt::print(stderr, "yarn {:<7} {:.1f} mm\n", pattern.yarns[y].id, m.yarn_length[y]);
   fmt::print(stderr, "penetration {:.3f} d (deepest overlap of two yarn tubes; the seed paper's loop overlaps by about 0.85 d)\n",
              m.deepest_penetration);
   fmt::print(stderr, "tightest bend {:.3f} tube radii (smallest radius of curvature over the tube's radius)\n", m.tightest_bend);
   fmt::print(stderr, "frame turn  {:.1f} deg (largest between consecutive sweep frames)\n", m.largest_frame_turn);
-  if (const auto shape = knitc::measure::loop_shape(fabric); shape.loops > 0)
+  if (const auto shape = knitc::measure::loop_shape(fabric.layout, fabric.pieces); shape.loops > 0)
     fmt::print(stderr, "loop shape  l {:.2f} mm, wale spacing {:.2f} mm, course spacing {:.2f} mm: kc {:.2f}, kw {:.2f}, kc/kw {:.2f} ({} inner loops)\n",
                shape.loop_length, shape.wale_spacing, shape.course_spacing, shape.kc, shape.kw, shape.kc / shape.kw, shape.loops);
   if (fabric.relaxed) {
     const auto& r = fabric.relaxation;
     fmt::print(stderr, "relaxation  {} iterations, {:.2f} s; capsule overlap {:.3f} d before, {:.3f} d after; lengths changed <= {:.2f}%\n",
-               r.iterations, fabric.relax_seconds, r.start_overlap, r.end_overlap, 100.0 * r.length_change);
+               r.iterations, relax_seconds, r.start_overlap, r.end_overlap, 100.0 * r.length_change);
   } else {
     fmt::print(stderr, "relaxation  off\n");
   }
@@ -168,21 +183,23 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric) {
 struct Compiled {
   knitc::Pattern pattern;
   knitc::Fabric fabric;
+  double relax_seconds = 0.0;  // wall time of the relaxation, for --stats only
 };
 
 // The pattern run and compiled, or the exit code when either failed.
 std::variant<Compiled, int> load_and_compile(const Args& args) {
   auto loaded = load(args);
   if (const int* code = std::get_if<int>(&loaded)) return *code;
-  auto compiled = compile(std::get<knitc::Pattern>(loaded), args);
+  RelaxClock clock;
+  auto compiled = compile(std::get<knitc::Pattern>(loaded), args, clock);
   if (const int* code = std::get_if<int>(&compiled)) return *code;
-  return Compiled{std::move(std::get<knitc::Pattern>(loaded)), std::move(std::get<knitc::Fabric>(compiled))};
+  return Compiled{std::move(std::get<knitc::Pattern>(loaded)), std::move(std::get<knitc::Fabric>(compiled)), clock.seconds};
 }
 
 int build(const Args& args) {
   auto result = load_and_compile(args);
   if (const int* code = std::get_if<int>(&result)) return *code;
-  const auto& [pattern, fabric] = std::get<Compiled>(result);
+  const auto& [pattern, fabric, relax_seconds] = std::get<Compiled>(result);
   std::vector<knitc::writers::OutputFile> files;
   files.push_back({args.output, [&](std::ostream& out) {
                      knitc::writers::write_glb(fabric.mesh, "knitc " KNITC_VERSION, out, {args.compress, args.compress});
@@ -190,7 +207,7 @@ int build(const Args& args) {
   if (!args.centreline.empty())
     files.push_back(knitc::writers::text_file(args.centreline, knitc::writers::centreline_json(pattern, fabric, args.compile.loop_model)));
   if (const int code = write(files); code != 0) return code;
-  if (args.stats) print_stats(pattern, fabric);
+  if (args.stats) print_stats(pattern, fabric, relax_seconds);
   if (!args.quiet && !args.stats && args.output != "-")
     report(fmt::format("knitc: wrote {} ({} loops)", args.output, fabric.layout.loops.size()));
   return 0;
@@ -199,7 +216,7 @@ int build(const Args& args) {
 int render(const Args& args) {
   auto result = load_and_compile(args);
   if (const int* code = std::get_if<int>(&result)) return *code;
-  const auto& [pattern, fabric] = std::get<Compiled>(result);
+  const auto& [pattern, fabric, relax_seconds] = std::get<Compiled>(result);
   std::string png;
   try {
     png = knitc::render::png(fabric.mesh, args.render);
@@ -208,7 +225,7 @@ int render(const Args& args) {
     return exit_internal;
   }
   if (const int code = write({knitc::writers::text_file(args.output, std::move(png))}); code != 0) return code;
-  if (args.stats) print_stats(pattern, fabric);
+  if (args.stats) print_stats(pattern, fabric, relax_seconds);
   if (!args.quiet && !args.stats && args.output != "-") report("knitc: wrote " + args.output);
   return 0;
 }
@@ -216,8 +233,8 @@ int render(const Args& args) {
 int snapshot(const Args& args) {
   auto result = load_and_compile(args);
   if (const int* code = std::get_if<int>(&result)) return *code;
-  const auto& [pattern, fabric] = std::get<Compiled>(result);
-  const std::string text = knitc::writers::snapshot(pattern, fabric);
+  const auto& [pattern, fabric, relax_seconds] = std::get<Compiled>(result);
+  const std::string text = knitc::writers::snapshot(pattern, fabric, knitc::measure::measure(pattern, fabric.layout, fabric.pieces));
   return write({knitc::writers::text_file(args.output.empty() ? "-" : args.output, text)});
 }
 

@@ -1,5 +1,7 @@
-// The compiler's pipeline, wired: Pattern -> Layout -> yarn paths -> NURBS curves ->
-// sweep -> Mesh. Each stage is a function of plain data; this file only runs them in turn.
+// The compiler's pipeline, wired: Pattern -> layout -> yarn paths -> (relax) -> curves
+// -> tubes -> Mesh. Each stage is a function of plain data in its own folder; compile()
+// only calls them in turn and refuses fabrics past the size limits before they are made.
+// docs/architecture.md is the map.
 #pragma once
 
 #include <cstdint>
@@ -7,21 +9,20 @@
 #include <stdexcept>
 #include <vector>
 
+#include "curves/curves.hpp"
 #include "layout/layout.hpp"
 #include "mesh/mesh.hpp"
 #include "nurbs/nurbs.hpp"
 #include "pattern.hpp"
 #include "relax/relax.hpp"
 #include "sweep/sweep.hpp"
+#include "tubes/tubes.hpp"
 #include "yarn_paths/yarn_paths.hpp"
 
 namespace knitc {
 
-enum class View {
-  surface,     // closed yarn tubes, triangles
-  wireframe,   // the tubes' rings and long edges, lines (the paper's Figure 7)
-  centreline,  // the sampled centrelines, one line strip per yarn piece (Figure 6)
-};
+using tubes::View;
+using curves::CurvePiece;
 
 // Mesh density: vertices around each ring, and the chord error of the surface along
 // the yarn as a fraction of the yarn's diameter.
@@ -48,30 +49,15 @@ struct CompileOptions {
   std::function<void(const char* stage, double fraction)> progress;
 };
 
-// One yarn piece through the stages: its data points, its curve, its samples.
-struct CurvePiece {
-  yarn_paths::Piece path;
-  nurbs::Interpolant curve;
-  std::vector<double> samples;  // curve parameters, increasing
-  sweep::Frames frames;         // one per sample; frames.origin are the centreline samples
-  std::vector<double> arc_length;  // the yarn's length in mm from the piece's start, per sample
-  // Loop j of the piece owns samples [loop_samples[j].first, loop_samples[j].second]
-  // (both ends: loops that meet share their join sample). Size: path.loops.size().
-  std::vector<std::pair<std::size_t, std::size_t>> loop_samples;
-};
-
+// What the stages made: each stage's own result, and nothing of how long they took
+// (the caller times them through CompileOptions::progress).
 struct Fabric {
   layout::Layout layout;
-  std::vector<CurvePiece> pieces;
-  mesh::Mesh mesh;
+  std::vector<CurvePiece> pieces;  // the curves stage's
+  mesh::Mesh mesh;                 // the tubes stage's
   bool relaxed = false;
-  relax::Stats relaxation;      // when relaxed
-  double relax_seconds = 0.0;   // wall time of the relaxation; not part of any output file
+  relax::Stats relaxation;         // when relaxed
 };
-
-// The frames each loop model sweeps with: Frenet for the paper's, rotation-minimising
-// for the smooth one.
-sweep::FrameKind frame_kind(yarn_paths::LoopModel model);
 
 // Sizes past which compile() refuses a fabric rather than run out of memory: about
 // 14 GB at peak on the way to the file, and the loops that take minutes before the mesh is even sized.
@@ -90,12 +76,5 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options);
 // The stages after the layout, on a given one (its loops' data points may be changed):
 // yarn paths, curves, sweep, mesh.
 Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptions& options);
-
-// How a yarn's cross-section is swept.
-sweep::CrossSection cross_section(const Yarn& yarn);
-
-// "#rrggbb" to linear RGB in [0, 1] (the sRGB transfer function undone), as glTF's
-// baseColorFactor wants. The string must be valid: the runtime checks it.
-glm::vec3 linear_rgb(const std::string& hex);
 
 }  // namespace knitc

@@ -188,7 +188,7 @@ TEST(Stitches, CrossesInBothNotations) {
 
 // ---- The corpus: knitter-written patterns, each in translation and as printed ----
 
-fs::path corpus() { return fs::path(KNITC_SOURCE_DIR) / "../shared/corpus"; }
+fs::path corpus() { return test::shared_dir() / "corpus"; }
 
 // The translation's pattern{} and cast_on lines, then the raw text as a knitspeak block.
 std::string as_printed(const std::string& name) {
@@ -222,7 +222,7 @@ const std::map<std::string, std::string> wrong_as_printed = {
 };
 
 TEST(Corpus, EveryPatternCompilesFromItsTranslationAndAsPrinted) {
-  if (!fs::exists(corpus())) GTEST_SKIP() << "no shared/corpus beside the repository";
+  KNITC_NEED_SHARED(corpus());
   int patterns = 0;
   for (const auto& entry : fs::directory_iterator(corpus() / "dsl")) {
     const std::string name = entry.path().stem().string();
@@ -257,7 +257,7 @@ TEST(Corpus, EveryPatternCompilesFromItsTranslationAndAsPrinted) {
 
 // Live stitches after each row, worked by hand from the printed text.
 TEST(Corpus, StitchCountsRowByRowWorkedByHand) {
-  if (!fs::exists(corpus())) GTEST_SKIP() << "no shared/corpus beside the repository";
+  KNITC_NEED_SHARED(corpus());
   auto printed = [](const std::string& name) { return counts(runtime::run_pattern(as_printed(name), name + ".lua").pattern); };
   // The edging grows on right-side rows and shrinks back, as its stated counts say.
   EXPECT_EQ(printed("sm_edging"), (std::vector<int>{14, 14, 15, 15, 17, 17, 19, 19, 17, 17, 16, 16, 15, 15}));

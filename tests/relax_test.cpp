@@ -53,7 +53,7 @@ TEST_P(Relaxed, ClearsEveryContactKeepingLengthsAndCrossings) {
   const Fabric after = compile(pattern, centrelines(true));
   ASSERT_TRUE(after.relaxed);
   EXPECT_LT(after.relaxation.iterations, relax::Options{}.max_iterations) << "did not converge";
-  const auto m0 = measure::measure(pattern, before), m1 = measure::measure(pattern, after);
+  const auto m0 = measure::measure(pattern, before.layout, before.pieces), m1 = measure::measure(pattern, after.layout, after.pieces);
   EXPECT_GT(m0.deepest_penetration, 0.5);  // the layout's overlap, for scale
   EXPECT_LE(m1.deepest_penetration, 0.05);
   for (std::size_t y = 0; y < pattern.yarns.size(); ++y) {
@@ -226,7 +226,7 @@ TEST(Relax, ClosestPointsOfSegments) {
 TEST(LoopShape, OfTheLayoutIsItsGauge) {
   const Pattern pattern = test::jersey(12, 10);  // W 4, H 4.2: C = 0.86 H
   const Fabric fabric = compile(pattern, centrelines(false));
-  const auto shape = measure::loop_shape(fabric);
+  const auto shape = measure::loop_shape(fabric.layout, fabric.pieces);
   EXPECT_EQ(shape.loops, 7u * 8u);  // courses 2..8 of the cast-on and 10 rows, needle positions 2..9
   EXPECT_NEAR(shape.wale_spacing, 4.0, 0.04);
   EXPECT_NEAR(shape.course_spacing, 0.86 * 4.2, 0.04);

@@ -3,25 +3,29 @@
 #include <gtest/gtest.h>
 
 #include "support.hpp"
+#include "measure/measure.hpp"
 #include "writers/writers.hpp"
 
 namespace knitc {
 namespace {
 
+// The snapshot of a fabric, with its own measures.
+std::string summary(const Pattern& p, const Fabric& f) { return writers::snapshot(p, f, measure::measure(p, f.layout, f.pieces)); }
+
 TEST(Snapshot, AOneMicrometreChangeOfADataPointShows) {
   const Pattern p = test::jersey(6, 4);
   CompileOptions o;
   const layout::Layout base = layout::lay_out(p);
-  const std::string before = writers::snapshot(p, compile(p, base, o));
-  EXPECT_EQ(before, writers::snapshot(p, compile(p, base, o)));  // no noise on a rerun
-  EXPECT_EQ(before, writers::snapshot(p, compile(p, o)));
+  const std::string before = summary(p, compile(p, base, o));
+  EXPECT_EQ(before, summary(p, compile(p, base, o)));  // no noise on a rerun
+  EXPECT_EQ(before, summary(p, compile(p, o)));
   int changed = 0;
   for (const int loop : {0, 7, 23}) {
     for (const int point : {1, 4, 8, 12}) {
       for (int axis = 0; axis < 3; ++axis) {
         layout::Layout moved = base;
         moved.loops[loop].data_points[point][axis] += 0.001;  // one micrometre
-        changed += writers::snapshot(p, compile(p, moved, o)) != before;
+        changed += summary(p, compile(p, moved, o)) != before;
       }
     }
   }
@@ -30,7 +34,7 @@ TEST(Snapshot, AOneMicrometreChangeOfADataPointShows) {
 
 TEST(Snapshot, SaysWhatTheFabricIs) {
   const Pattern p = test::jersey(4, 3);
-  const std::string s = writers::snapshot(p, compile(p, CompileOptions{}));
+  const std::string s = summary(p, compile(p, CompileOptions{}));
   EXPECT_EQ(s.rfind("knitc snapshot 1\npattern     jersey\ncourses     4\nwales       4\nloops       16\npieces      1\n", 0), 0u)
       << s;
   EXPECT_NE(s.find("\nyarn A mm  "), std::string::npos);

@@ -40,6 +40,18 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
   return dir;
 }
 
+// The folder beside the repository that holds the corpus and the seed paper's data
+// (../shared). A test that needs it skips where it is missing, but fails under CI
+// (.ci/run sets KNITC_REQUIRE_SHARED), where it must be there.
+inline std::filesystem::path shared_dir() { return std::filesystem::path(KNITC_SOURCE_DIR) / ".." / "shared"; }
+#define KNITC_NEED_SHARED(path)                                                                  \
+  do {                                                                                           \
+    if (!std::filesystem::exists(path)) {                                                        \
+      if (std::getenv("KNITC_REQUIRE_SHARED") != nullptr) FAIL() << "missing under CI: " << (path); \
+      GTEST_SKIP() << "no " << (path) << " beside the repository";                              \
+    }                                                                                            \
+  } while (0)
+
 // The directory whose .glb files the validator test checks after the unit tests.
 inline std::filesystem::path glb_dir() {
   std::filesystem::create_directories(KNITC_GLB_DIR);

@@ -126,7 +126,7 @@ TEST(Tube, EveryYarnTubeIsClosedTwoManifoldAndFacesOut) {
       for (const auto& piece : f.pieces) {
         // Each strand's tube alone (in paper mode neighbouring loops' caps touch, so
         // welding the whole primitive would join them).
-        const auto strands = sweep::strands(piece.frames, piece.arc_length, cross_section(pattern.yarns[0]));
+        const auto strands = sweep::strands(piece.frames, piece.arc_length, tubes::cross_section(pattern.yarns[0]));
         ASSERT_EQ(strands.size(), static_cast<std::size_t>(strands_per_piece));
         const int sides = strands_per_piece > 1 ? 5 : 9;
         for (const auto& strand : strands) {
@@ -190,7 +190,7 @@ TEST(Tube, PliesTwistAsAskedAndStayInsideTheYarn) {
   const Pattern p = swatch("{ diameter = 1.2, section = \"plied\", plies = 2, twist = 10, direction = \"S\" }");
   const Fabric f = compile(p, CompileOptions{});
   const auto& piece = f.pieces[0];
-  const auto strands = sweep::strands(piece.frames, piece.arc_length, cross_section(p.yarns[0]));
+  const auto strands = sweep::strands(piece.frames, piece.arc_length, tubes::cross_section(p.yarns[0]));
   ASSERT_EQ(strands.size(), 2u);
   // Two plies of a quarter of the width, their centres a quarter of the width off the axis.
   EXPECT_NEAR(strands[0].along_normal, 0.3, 1e-12);

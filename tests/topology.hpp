@@ -19,6 +19,7 @@ struct TopologyReport {
   std::size_t non_manifold_edges = 0;    // used by other than exactly two triangles
   std::size_t inconsistent_edges = 0;    // the same directed edge twice
   double signed_volume = 0.0;            // mm^3, positive when triangles face out
+  double least_component_volume = 0.0;   // the smallest of the components' signed volumes
   std::size_t components = 0;
 };
 
@@ -60,6 +61,14 @@ inline TopologyReport topology(const mesh::Primitive& prim) {
     if (n != 2) ++r.non_manifold_edges;
   }
   for (std::uint32_t i = 0; i < parent.size(); ++i) r.components += find(i) == i;
+  std::map<std::uint32_t, double> volume;  // by component
+  for (std::size_t t = 0; t < prim.indices.size(); t += 3) {
+    const glm::dvec3 a(prim.positions[prim.indices[t]]), b(prim.positions[prim.indices[t + 1]]),
+        c(prim.positions[prim.indices[t + 2]]);
+    volume[find(weld[prim.indices[t]])] += glm::dot(a, glm::cross(b, c)) / 6.0;
+  }
+  r.least_component_volume = volume.empty() ? 0.0 : volume.begin()->second;
+  for (const auto& [root, v] : volume) r.least_component_volume = std::min(r.least_component_volume, v);
   return r;
 }
 

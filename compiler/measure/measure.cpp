@@ -21,10 +21,10 @@ struct Point {
 };
 
 // The centrelines as points no more than a quarter diameter apart.
-std::vector<Point> centreline_points(const Pattern& pattern, const Fabric& fabric) {
+std::vector<Point> centreline_points(const Pattern& pattern, std::span<const curves::CurvePiece> pieces) {
   std::vector<Point> points;
-  for (std::size_t i = 0; i < fabric.pieces.size(); ++i) {
-    const CurvePiece& p = fabric.pieces[i];
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const curves::CurvePiece& p = pieces[i];
     const double d = pattern.yarns[p.path.yarn].diameter;
     const auto& o = p.frames.origin;
     for (std::size_t s = 0; s < o.size(); ++s) {
@@ -94,15 +94,15 @@ double deepest_penetration(const std::vector<Point>& points, double cell) {
 
 }  // namespace
 
-FabricMeasures measure(const Pattern& pattern, const Fabric& fabric) {
+FabricMeasures measure(const Pattern& pattern, const layout::Layout& layout, std::span<const curves::CurvePiece> pieces) {
   FabricMeasures m;
-  m.loops = fabric.layout.loops.size();
-  m.pieces = fabric.pieces.size();
+  m.loops = layout.loops.size();
+  m.pieces = pieces.size();
   m.yarn_length.assign(pattern.yarns.size(), 0.0);
   double thickest = 0.0;
   for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
   m.tightest_bend = std::numeric_limits<double>::infinity();
-  for (const CurvePiece& p : fabric.pieces) {
+  for (const curves::CurvePiece& p : pieces) {
     if (!p.arc_length.empty()) m.yarn_length[p.path.yarn] += p.arc_length.back();
     const double radius = 0.5 * pattern.yarns[p.path.yarn].diameter;
     for (std::size_t s = 0; s < p.samples.size(); ++s) {
@@ -117,16 +117,15 @@ FabricMeasures measure(const Pattern& pattern, const Fabric& fabric) {
   }
   // Distances are compared against each pair's radii; the overlap is reported per
   // diameter of the thickest yarn (one yarn in most fabrics).
-  if (thickest > 0.0) m.deepest_penetration = deepest_penetration(centreline_points(pattern, fabric), thickest);
+  if (thickest > 0.0) m.deepest_penetration = deepest_penetration(centreline_points(pattern, pieces), thickest);
   return m;
 }
 
-LoopShape loop_shape(const Fabric& fabric) {
-  const auto& layout = fabric.layout;
+LoopShape loop_shape(const layout::Layout& layout, std::span<const curves::CurvePiece> pieces) {
   // Each loop's centre and length, from the piece that owns it.
   std::vector<glm::dvec3> centre(layout.loops.size(), glm::dvec3(0.0));
   std::vector<double> length(layout.loops.size(), -1.0);
-  for (const CurvePiece& p : fabric.pieces) {
+  for (const curves::CurvePiece& p : pieces) {
     for (std::size_t j = 0; j < p.path.loops.size() && j < p.loop_samples.size(); ++j) {
       const auto [first, last] = p.loop_samples[j];
       glm::dvec3 sum(0.0);

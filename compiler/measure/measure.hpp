@@ -1,11 +1,15 @@
-// Geometric sanity of a compiled fabric: how long each yarn is, how deep distinct parts
-// of the yarns pass into each other, how tightly the tubes bend and how fast the sweep's
-// frames turn. Plain numbers from a Fabric, for `knitc build --stats` and the snapshots.
+// Measuring, a stage of its own: how long each yarn is, how deep distinct parts of the
+// yarns pass into each other, how tightly the tubes bend, how fast the sweep's frames
+// turn, and the loops' shape. Plain numbers from the layout and the curve pieces, for
+// `knitc build --stats` and the snapshots (whose writer takes them as an argument).
 #pragma once
 
+#include <span>
 #include <vector>
 
-#include "compile.hpp"
+#include "curves/curves.hpp"
+#include "layout/layout.hpp"
+#include "pattern.hpp"
 
 namespace knitc::measure {
 
@@ -25,7 +29,7 @@ struct FabricMeasures {
 };
 
 // Linear in the fabric: a spatial hash of cells one diameter wide finds the close pairs.
-FabricMeasures measure(const Pattern& pattern, const Fabric& fabric);
+FabricMeasures measure(const Pattern& pattern, const layout::Layout& layout, std::span<const curves::CurvePiece> pieces);
 
 // The shape of the fabric's inner loops, in the terms of Munden (1959): the loop length
 // l (yarn per stitch, sinker loop to sinker loop), the distances between the centres
@@ -39,6 +43,6 @@ struct LoopShape {
   double loop_length = 0.0, wale_spacing = 0.0, course_spacing = 0.0;  // mm, means
   double kc = 0.0, kw = 0.0;
 };
-LoopShape loop_shape(const Fabric& fabric);
+LoopShape loop_shape(const layout::Layout& layout, std::span<const curves::CurvePiece> pieces);
 
 }  // namespace knitc::measure

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <limits>
 
-#include "measure/measure.hpp"
 #include "writers/writers.hpp"
 
 namespace knitc::writers {
@@ -31,14 +30,13 @@ std::string fixed(double v, int decimals) {
 
 }  // namespace
 
-std::string snapshot(const Pattern& pattern, const Fabric& fabric) {
+std::string snapshot(const Pattern& pattern, const Fabric& fabric, const measure::FabricMeasures& m) {
   std::string out = "knitc snapshot 1\n";
   out += "pattern     " + pattern.name + "\n";
   out += "courses     " + std::to_string(fabric.layout.courses) + "\n";
   out += "wales       " + std::to_string(fabric.layout.wales) + "\n";
   out += "loops       " + std::to_string(fabric.layout.loops.size()) + "\n";
   out += "pieces      " + std::to_string(fabric.pieces.size()) + "\n";
-  const auto m = measure::measure(pattern, fabric);
   for (std::size_t y = 0; y < pattern.yarns.size(); ++y)
     out += "yarn " + pattern.yarns[y].id + " mm  " + fixed(m.yarn_length[y], 3) + "\n";
   out += "penetration " + fixed(m.deepest_penetration, 3) + " d\n";

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "compile.hpp"
+#include "measure/measure.hpp"
 #include "mesh/mesh.hpp"
 
 namespace knitc::writers {
@@ -46,9 +47,10 @@ std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_p
 std::string chart_text(const Pattern& pattern);
 
 // A short, stable, diff-friendly summary of a compiled fabric for snapshot tests: counts,
-// each yarn's length (0.001 mm), the bounds (0.001 mm) and a 64-bit FNV-1a hash of every
+// each yarn's length (0.001 mm) and the sanity figures from `measures` (the measuring
+// stage's, for this fabric), the bounds (0.001 mm) and a 64-bit FNV-1a hash of every
 // position quantised to 1 micrometre and every index. The same for any thread count.
-std::string snapshot(const Pattern& pattern, const Fabric& fabric);
+std::string snapshot(const Pattern& pattern, const Fabric& fabric, const measure::FabricMeasures& measures);
 
 struct OutputFile {
   std::string path;                          // "-" is standard output

@@ -1,0 +1,57 @@
+#include "curves/curves.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace knitc::curves {
+
+sweep::FrameKind frame_kind(yarn_paths::LoopModel model) {
+  return model == yarn_paths::LoopModel::paper ? sweep::FrameKind::frenet : sweep::FrameKind::rotation_minimising;
+}
+
+double max_sample_step(const Yarn& yarn) {
+  // A twelfth of a turn of the twist.
+  return yarn.section == Section::plied && yarn.twist > 0.0 ? (100.0 / yarn.twist) / 12.0
+                                                            : std::numeric_limits<double>::infinity();
+}
+
+CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& options) {
+  CurvePiece piece;
+  piece.path = std::move(path);
+  nurbs::InterpolationOptions io;
+  io.parametrisation = options.parametrisation;
+  piece.curve = nurbs::interpolate(piece.path.data_points, io);
+
+  // Sample span by span between the loops' ends.
+  const double d = yarn.diameter;
+  const double tolerance = options.chord_tolerance * d;
+  const double max_step = max_sample_step(yarn);
+  const auto& u = piece.curve.parameters;
+  const std::size_t last = u.size() - 1;
+  std::vector<std::size_t> breaks = {0, last};
+  breaks.insert(breaks.end(), piece.path.loop_first.begin(), piece.path.loop_first.end());
+  breaks.insert(breaks.end(), piece.path.loop_last.begin(), piece.path.loop_last.end());
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+  std::vector<std::size_t> sample_at(u.size(), 0);  // the sample at each break
+  piece.samples.push_back(u[0]);
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const auto s = sweep::sample_parameters(piece.curve.curve, u[breaks[k]], u[breaks[k + 1]], tolerance, 0.5 * d, max_step);
+    piece.samples.insert(piece.samples.end(), s.begin() + 1, s.end());
+    sample_at[breaks[k + 1]] = piece.samples.size() - 1;
+  }
+  for (std::size_t j = 0; j < piece.path.loops.size(); ++j)
+    piece.loop_samples.emplace_back(sample_at[piece.path.loop_first[j]], sample_at[piece.path.loop_last[j]]);
+  piece.frames = sweep::frames(piece.curve.curve, piece.samples, options.frames);
+  piece.arc_length.assign(piece.samples.size(), 0.0);
+  for (std::size_t i = 1; i < piece.samples.size(); ++i)
+    piece.arc_length[i] = piece.arc_length[i - 1] + nurbs::segment_length(piece.curve.curve, piece.samples[i - 1], piece.samples[i]);
+  return piece;
+}
+
+double estimate_samples(const yarn_paths::Piece& path, const Yarn& yarn, const Options& options) {
+  return sweep::estimate_samples(path.data_points, options.chord_tolerance * yarn.diameter, 0.5 * yarn.diameter,
+                                 max_sample_step(yarn));
+}
+
+}  // namespace knitc::curves

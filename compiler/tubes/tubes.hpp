@@ -1,0 +1,50 @@
+// Tubes: the yarns' cross-sections swept along their curve pieces and gathered into the
+// mesh, one primitive and one material per yarn. Curve pieces in, the mesh out. The one
+// place that says how many sides and strands a yarn's tube has, and so how many vertices
+// a fabric's mesh will have.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "curves/curves.hpp"
+#include "mesh/mesh.hpp"
+#include "pattern.hpp"
+#include "sweep/sweep.hpp"
+
+namespace knitc::tubes {
+
+enum class View {
+  surface,     // closed yarn tubes, triangles
+  wireframe,   // the tubes' rings and long edges, lines (the paper's Figure 7)
+  centreline,  // the sampled centrelines, one line strip per yarn piece (Figure 6)
+};
+
+// How a yarn's cross-section is swept.
+sweep::CrossSection cross_section(const Yarn& yarn);
+
+// The vertices around each ring of the yarn's tubes for the mesh's `sides` (>= 3): a ply
+// is a fraction of the yarn's width, about half the sides do, at least 5.
+int ring_sides(const Yarn& yarn, int sides);
+
+// The tubes swept along one piece of the yarn: its plies, or one.
+std::size_t strand_count(const Yarn& yarn);
+
+// The vertices of a surface mesh whose piece of `yarn` has `samples` samples, at `sides`.
+std::uint64_t vertex_count(const Yarn& yarn, std::size_t samples, int sides);
+
+// "#rrggbb" to linear RGB in [0, 1] (the sRGB transfer function undone), as glTF's
+// baseColorFactor wants. The string must be valid: the runtime checks it.
+glm::vec3 linear_rgb(const std::string& hex);
+
+// The mesh of the pieces, each of yarns[piece.path.yarn]: a material per yarn used (in
+// the yarns' order), and per yarn one triangle (surface) or line (wireframe) primitive,
+// or a line strip per piece (centreline). The same bytes for any thread count.
+mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, View view, int sides,
+                      int threads);
+
+}  // namespace knitc::tubes
