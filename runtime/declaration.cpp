@@ -237,8 +237,8 @@ int pattern_verb(lua_State* L) {
     }
   }
   lua_pop(L, 1);
-  s.pattern = std::move(p);
-  for (const Yarn& y : s.pattern.yarns) s.yarn_ids.push_back(y.id);
+  for (const Yarn& y : p.yarns) s.yarn_ids.push_back(y.id);
+  s.work = language::Work(std::move(p), {max_stitches, max_loops});
   s.declared = true;
   s.declared_line = caller_line(L);
   return 0;

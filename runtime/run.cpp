@@ -76,9 +76,9 @@ RunResult run_script(std::string_view source, const std::string& file, const Run
 
   if (!script.declared)
     throw PatternError(file + ":1: the script never calls pattern{}; start it with pattern { name = ..., gauge = ..., yarns = ... }");
-  Pattern& p = script.pattern;
+  Pattern p = script.work.take();
   if (p.courses.empty()) {
-    const int line = script.cast_on_line != 0 ? script.cast_on_line : script.declared_line;
+    const int line = script.work.cast_on_line() != 0 ? script.work.cast_on_line() : script.declared_line;
     throw PatternError(file + ":" + std::to_string(line) + ": the pattern has no courses; add some, e.g. rows(10, \"k\")");
   }
   RunResult result;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "language/chart.hpp"
+#include "language/work.hpp"
 #include "language/written.hpp"
 #include "runtime.hpp"
 #include "sandbox.hpp"
@@ -17,17 +18,10 @@ namespace knitc::runtime {
 struct Script {
   RunOptions options;
   std::string directory;  // the pattern file's folder, for its lib/
-  Pattern pattern;
-  std::vector<std::string> yarn_ids;  // pattern.yarns' ids, in order
+  language::Work work;                // the pattern declared, its courses, the needle
+  std::vector<std::string> yarn_ids;  // the pattern's yarns' ids, in order
   bool declared = false;
   int declared_line = 0;
-  int cast_on_line = 0;
-  int bind_off_line = 0;
-  int live = 0;           // live stitches on the needle
-  std::vector<bool> purl_faced;  // per live stitch, face order: shows as a purl on the face
-  bool first_row_wrong_side = false;  // flat: row 1 is worked from the wrong side (knitspeak "Row 1 (WS)")
-  int current_yarn = 0;
-  long long loops = 0;
   language::Legend legend = language::default_legend();
   std::vector<std::string> warnings;
   std::size_t warnings_dropped = 0;   // warnings past max_warnings, counted only

@@ -15,85 +15,39 @@ void need_pattern(lua_State* L, const char* verb) {
   if (!script_of(L).declared) fail(L, std::string(verb) + " comes before pattern{}; declare the pattern first");
 }
 
-// The next row's number and the side it is worked from.
-int next_row(const Script& s) { return static_cast<int>(s.pattern.courses.size()) + 1; }
-Side side_of(const Script& s, int row) {
-  return s.pattern.knitting == Knitting::flat && (row + (s.first_row_wrong_side ? 1 : 0)) % 2 == 0 ? Side::wrong : Side::right;
-}
-
-// How each live stitch shows on the face after a course: what "knit the knit sts and
-// purl the purl sts" reads. A slipped or tucked stitch keeps the look of the one below.
-std::vector<bool> faces_after(const Course& c, const std::vector<bool>& below) {
-  std::vector<bool> out;
-  std::size_t at = 0;
-  for (const Op& op : c.ops) {
-    const StitchDef& st = stitch(op.stitch);
-    const bool purl = purled(st);
-    for (int k = 0; k < st.produces; ++k) {
-      const bool kept = st.family == StitchFamily::slip || st.family == StitchFamily::tuck;
-      out.push_back(kept && at + static_cast<std::size_t>(k) < below.size() ? below[at + static_cast<std::size_t>(k)] : purl);
-    }
-    at += static_cast<std::size_t>(st.consumes);
-  }
-  return out;
-}
+int next_row(const Script& s) { return s.work.next_row(); }
 
 void need_live(lua_State* L, const Script& s) {
-  if (s.live > 0) return;
-  if (s.bind_off_line != 0) fail(L, "no live stitches: all were bound off at line " + std::to_string(s.bind_off_line));
-  if (s.cast_on_line == 0) fail(L, "no live stitches; call cast_on(n) first");
-  fail(L, "no live stitches are left; the rows before decreased them all");
+  if (auto e = s.work.no_live_stitches()) fail(L, *e);
 }
 
-// Adds a course in face view, then checks what it leaves on the needle.
-void add_course(lua_State* L, std::vector<Op> ops, const SourceLocation& where) {
-  Script& s = script_of(L);
-  Course c;
-  c.ops = std::move(ops);
-  c.side = side_of(s, next_row(s));
-  c.where = where.file == sandbox_of(L).file ? where : pattern_location(L, where);
-  // What the course costs to work and keep, charged to the script.
-  charge(L, 200 + 5 * c.ops.size());  // measured: about 30 ns a stitch, 6 instructions' time
-  auto& courses = s.pattern.courses;
-  // The course's own blocks (and malloc's keeping of them), and the list's next growth.
-  std::size_t bytes = sizeof(Course) + c.ops.capacity() * sizeof(Op) + c.where.file.capacity() + 32;
-  if (courses.size() == courses.capacity()) bytes += std::max<std::size_t>(1, courses.capacity()) * sizeof(Course);
-  hold(L, bytes);
-  const int live = produced(c);
-  if (live > max_stitches)
-    fail(L, "row " + std::to_string(next_row(s)) + " leaves " + std::to_string(live) + " stitches; at most " +
-                std::to_string(max_stitches) + " fit on a needle");
-  s.loops += live;
-  if (s.loops > max_loops)
-    fail(L, "the fabric would have more than " + std::to_string(max_loops) + " loops; knit a smaller piece");
-  s.live = live;
-  s.purl_faced = faces_after(c, s.purl_faced);
-  s.pattern.courses.push_back(std::move(c));
+// Where a course is said: its own line in the pattern file, or the pattern's line that
+// called the library function working it.
+SourceLocation course_location(lua_State* L, const SourceLocation& where) {
+  return where.file == sandbox_of(L).file ? where : pattern_location(L, where);
+}
+
+// What a course of `stitches` costs to work and keep, charged to the script first.
+void charge_course(lua_State* L, std::size_t stitches, const SourceLocation& where) {
+  charge(L, 200 + 5 * stitches);  // measured: about 30 ns a stitch, 6 instructions' time
+  hold(L, script_of(L).work.cost(stitches, where));
+}
+
+// Adds a course in face view.
+void add_course(lua_State* L, std::vector<Op> ops, const SourceLocation& at) {
+  const SourceLocation where = course_location(L, at);
+  charge_course(L, ops.size(), where);
+  if (auto e = script_of(L).work.add(std::move(ops), where)) fail(L, *e);
 }
 
 // Works written text (already parsed) as the next row. `line` is where the course comes
 // from; `located`: errors point at it too (a line inside a text block), not the caller.
 void work_written(lua_State* L, const language::RowText& text, const std::string& source, const SourceLocation& line,
                   bool located = false) {
-  auto stop = [&](const std::string& m) { located ? fail_at(L, line, m) : fail(L, m); };
   Script& s = script_of(L);
-  need_live(L, s);
-  const int row = next_row(s);
-  if (text.as_they_appear) {  // face view directly: each stitch keeps the look it has
-    std::vector<Op> ops;
-    for (int i = 0; i < s.live; ++i) {
-      const bool purl = static_cast<std::size_t>(i) < s.purl_faced.size() && s.purl_faced[static_cast<std::size_t>(i)];
-      ops.push_back({stitch_id(purl ? "p" : "k"), s.current_yarn});
-    }
-    add_course(L, std::move(ops), line);
-    return;
-  }
-  auto worked = language::work_row(text, source, s.live, row);
-  if (auto* e = std::get_if<language::TextError>(&worked)) stop(e->message);
-  auto ops = language::face_view(std::get<std::vector<language::Worked>>(worked), side_of(s, row), s.current_yarn);
-  if (auto* e = std::get_if<language::TextError>(&ops))
-    stop("row " + std::to_string(row) + " " + language::quote_row(source) + " is a wrong-side row: " + e->message);
-  add_course(L, std::move(std::get<std::vector<Op>>(ops)), line);
+  const SourceLocation where = course_location(L, line);
+  charge_course(L, static_cast<std::size_t>(s.work.live()), where);
+  if (auto e = s.work.work_text(text, source, where)) located ? fail_at(L, line, *e) : fail(L, *e);
 }
 
 language::RowText parse_written(lua_State* L, const std::string& text, const SourceLocation* at = nullptr) {
@@ -125,16 +79,14 @@ SourceLocation block_start(lua_State* L) {
 int cast_on_verb(lua_State* L) {
   need_pattern(L, "cast_on");
   Script& s = script_of(L);
-  if (s.cast_on_line != 0) fail(L, "cast_on was already called at line " + std::to_string(s.cast_on_line));
-  s.live = static_cast<int>(whole_number(L, 1, "cast_on's stitch count", 1, max_stitches));
+  if (s.work.cast_on_line() != 0) fail(L, "cast_on was already called at line " + std::to_string(s.work.cast_on_line()));
+  const int stitches = static_cast<int>(whole_number(L, 1, "cast_on's stitch count", 1, max_stitches));
+  int yarn = s.work.yarn();
   if (!lua_isnoneornil(L, 2)) {
     if (lua_type(L, 2) != LUA_TSTRING) fail(L, "cast_on's yarn must be a declared yarn's name, e.g. cast_on(24, \"B\")");
-    s.current_yarn = yarn_index(L, text_of(L, 2));
+    yarn = yarn_index(L, text_of(L, 2));
   }
-  s.pattern.cast_on = s.live;
-  s.purl_faced.assign(static_cast<std::size_t>(s.live), false);
-  s.pattern.cast_on_yarn = s.current_yarn;
-  s.cast_on_line = caller_line(L);
+  if (auto e = s.work.cast_on(stitches, yarn, caller_line(L))) fail(L, *e);
   return 0;
 }
 
@@ -204,10 +156,10 @@ int course_verb(lua_State* L) {
   lua_getfield(L, 1, "rep");
   if (!lua_isnil(L, -1)) text = "(" + text + ") x" + std::to_string(whole_number(L, lua_gettop(L), "course{}.rep", 1, max_stitches));
   lua_pop(L, 1);
-  const int saved_yarn = s.current_yarn;
-  if (const auto yarn = string_field(L, 1, "course{}", "yarn")) s.current_yarn = yarn_index(L, *yarn);
+  const int saved_yarn = s.work.yarn();
+  if (const auto yarn = string_field(L, 1, "course{}", "yarn")) s.work.change_yarn(yarn_index(L, *yarn));
   work_written(L, parse_written(L, text), text, caller_location(L));
-  s.current_yarn = saved_yarn;
+  s.work.change_yarn(saved_yarn);
   return 0;
 }
 
@@ -238,7 +190,9 @@ void read_legend(lua_State* L, int index, language::Legend& legend, const std::s
 int legend_verb(lua_State* L) {
   need_pattern(L, "legend");
   if (lua_type(L, 1) != LUA_TTABLE) fail(L, "legend takes a table, e.g. legend { [\"#\"] = { \"k\", yarn = \"B\" } }");
-  read_legend(L, 1, script_of(L).legend, "legend");
+  language::Legend legend = script_of(L).legend;  // kept only if all of it reads
+  read_legend(L, 1, legend, "legend");
+  script_of(L).legend = std::move(legend);
   return 0;
 }
 
@@ -287,25 +241,26 @@ int chart_verb(lua_State* L) {
       const SourceLocation at{chart_file, line};
       auto located = [&](const std::string& m) { fail_at(L, at, m); };
       if (width == 0) located(name + " works no stitches; draw a stitch in each column");
-      if (width > s.live || s.live % width != 0) {
-        const int left = width > s.live ? s.live - width : s.live % width;
+      const int live = s.work.live();
+      if (width > live || live % width != 0) {
+        const int left = width > live ? live - width : live % width;
         located(name + " is " + std::to_string(width) + " stitches wide and does not repeat evenly across " +
-                std::to_string(s.live) + " live stitches (" +
+                std::to_string(live) + " live stitches (" +
                 (left > 0 ? std::to_string(left) + " left over" : std::to_string(-left) + " missing") +
                 "); make the live count a multiple of " + std::to_string(width));
       }
       std::vector<Op> ops;
-      ops.reserve(rows[i].cells.size() * (s.live / width));
+      ops.reserve(rows[i].cells.size() * static_cast<std::size_t>(live / width));
       // A chart is drawn as the face looks: its cells are face view already, on either side.
-      if (side_of(s, next_row(s)) == Side::wrong) {
+      if (s.work.side_of(next_row(s)) == Side::wrong) {
         for (const auto& cell : rows[i].cells) {
           if (!wrong_side_face(cell.stitch))
             located(name + " is a wrong-side row: " + std::string(stitch(cell.stitch).name) +
                     " has no wrong-side form in knitc; put it on a right-side (odd) row");
         }
       }
-      for (int k = 0; k < s.live / width; ++k) {
-        for (const auto& cell : rows[i].cells) ops.push_back({cell.stitch, cell.yarn < 0 ? s.current_yarn : cell.yarn});
+      for (int k = 0; k < live / width; ++k) {
+        for (const auto& cell : rows[i].cells) ops.push_back({cell.stitch, cell.yarn < 0 ? s.work.yarn() : cell.yarn});
       }
       add_course(L, std::move(ops), at);
     }
@@ -334,15 +289,16 @@ int knitspeak_verb(lua_State* L) {
     std::string label = r.number > 0 ? "row " + std::to_string(r.number) + " of the text" : "this line";
     if (r.repeat) label = "the repeat of " + label;
     // A first row printed as a wrong-side row: the knitter turned the work first.
-    if (s.pattern.courses.empty() && r.side == Side::wrong && s.pattern.knitting == Knitting::flat) s.first_row_wrong_side = true;
-    if (r.side && s.pattern.knitting == Knitting::flat && *r.side != side_of(s, next_row(s)))
+    const bool flat = s.work.pattern().knitting == Knitting::flat;
+    if (s.work.pattern().courses.empty() && r.side == Side::wrong) s.work.start_on_wrong_side();
+    if (r.side && flat && *r.side != s.work.side_of(next_row(s)))
       fail_at(L, where, label + " is printed as a " + (*r.side == Side::right ? "right" : "wrong") + "-side row but is row " +
                             std::to_string(next_row(s)) + " of the fabric, a " +
                             (*r.side == Side::right ? "wrong" : "right") + "-side row; check the rows before it");
     work_written(L, parse_written(L, r.text, &where), r.text, where, true);
-    if (r.stitches_after && *r.stitches_after != s.live)
+    if (r.stitches_after && *r.stitches_after != s.work.live())
       fail_at(L, where, label + " says it leaves " + std::to_string(*r.stitches_after) + " sts but its stitches leave " +
-                            std::to_string(s.live) + "; the text's count does not come out (check the row or the cast-on)");
+                            std::to_string(s.work.live()) + "; the text's count does not come out (check the row or the cast-on)");
   }
   return 0;
 }
@@ -350,29 +306,24 @@ int knitspeak_verb(lua_State* L) {
 int yarn_verb(lua_State* L) {
   need_pattern(L, "yarn");
   if (lua_type(L, 1) != LUA_TSTRING) fail(L, "yarn takes a declared yarn's name, e.g. yarn \"B\"");
-  script_of(L).current_yarn = yarn_index(L, text_of(L, 1));
+  script_of(L).work.change_yarn(yarn_index(L, text_of(L, 1)));
   return 0;
 }
 
 int bind_off_verb(lua_State* L) {
   need_pattern(L, "bind_off");
-  Script& s = script_of(L);
-  need_live(L, s);
-  if (s.pattern.courses.empty()) fail(L, "bind_off right after cast_on leaves no fabric; knit some rows first");
-  s.pattern.bound_off = true;
-  s.live = 0;
-  s.bind_off_line = caller_line(L);
+  if (auto e = script_of(L).work.bind_off(caller_line(L))) fail(L, *e);
   return 0;
 }
 
 int live_verb(lua_State* L) {
-  lua_pushinteger(L, script_of(L).live);
+  lua_pushinteger(L, script_of(L).work.live());
   return 1;
 }
 
 int knitting_verb(lua_State* L) {
   need_pattern(L, "knitting");
-  lua_pushstring(L, script_of(L).pattern.knitting == Knitting::flat ? "flat" : "round");
+  lua_pushstring(L, script_of(L).work.pattern().knitting == Knitting::flat ? "flat" : "round");
   return 1;
 }
 
@@ -386,7 +337,7 @@ int right_side_verb(lua_State* L) {
   need_pattern(L, "right_side");
   const Script& s = script_of(L);
   const long long row = lua_isnoneornil(L, 1) ? next_row(s) : whole_number(L, 1, "right_side's row", 1, max_loops);
-  lua_pushboolean(L, side_of(s, static_cast<int>(row)) == Side::right);
+  lua_pushboolean(L, s.work.side_of(static_cast<int>(row)) == Side::right);
   return 1;
 }
 
@@ -470,14 +421,26 @@ int verb_entry(lua_State* L) {
     }
   } hold_verbs{s, holds};
   if (holds) s.running_verb = verb.name;
+  // All or nothing: a verb that fails (and is caught by pcall) leaves the work as it was.
+  // require is not undone: the rows its module worked were the module's own verbs'.
+  const language::Work::Mark mark = holds ? s.work.mark() : language::Work::Mark{};
+  const std::size_t held = sandbox_of(L).host_bytes;
   try {
-    return verb.function(L);
-  } catch (const std::bad_alloc&) {  // the C++ side out of memory: a stop like the Lua side's
-    stop(L, Stop::memory);
-  } catch (const std::length_error&) {
-    stop(L, Stop::memory);
-  } catch (const std::exception& e) {  // never let a C++ exception cross Lua's frames
-    fail(L, std::string("knitc could not work this verb: ") + e.what());
+    try {
+      return verb.function(L);
+    } catch (const std::bad_alloc&) {  // the C++ side out of memory: a stop like the Lua side's
+      stop(L, Stop::memory);
+    } catch (const std::length_error&) {
+      stop(L, Stop::memory);
+    } catch (const std::exception& e) {  // never let a C++ exception cross Lua's frames
+      fail(L, std::string("knitc could not work this verb: ") + e.what());
+    }
+  } catch (...) {  // a Lua error on its way out: undo, and let it go on
+    if (holds) {
+      s.work.restore(mark);
+      sandbox_of(L).host_bytes = held;
+    }
+    throw;
   }
 }
 

@@ -1,0 +1,82 @@
+// The work, as knitters say: the fabric knitted so far and the stitches on the needle.
+// The verbs drive it; it keeps the knitting's state and rules (the live count, how each
+// live stitch shows on the face, which side a row is worked from, the limits) without Lua,
+// so it can be fuzzed alone. Every change is all or nothing: a call that fails changes
+// nothing, and mark() / restore() undo a whole verb.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "language/written.hpp"
+#include "pattern.hpp"
+
+namespace knitc::language {
+
+class Work {
+ public:
+  struct Limits {
+    long long stitches = 100'000;  // on the needle, after any course
+    long long loops = 20'000'000;  // in the whole fabric
+  };
+
+  Work() = default;
+  // The declared pattern (name, gauge, yarns, knitting), with no courses yet.
+  Work(Pattern declared, Limits limits);
+
+  const Pattern& pattern() const { return pattern_; }
+  Pattern take() { return std::move(pattern_); }
+  int live() const { return live_; }
+  int yarn() const { return yarn_; }  // the yarn being knitted, an index into pattern().yarns
+  int next_row() const { return static_cast<int>(pattern_.courses.size()) + 1; }
+  // The side row `row` (1 for the first) is worked from: every row in the round; in flat
+  // knitting the odd rows, or the even ones when row 1 was worked from the wrong side.
+  Side side_of(int row) const;
+  int cast_on_line() const { return cast_on_line_; }
+  int bind_off_line() const { return bind_off_line_; }
+
+  // Each returns what is wrong, or nothing when done; a call that fails changes nothing.
+  std::optional<std::string> cast_on(int stitches, int yarn, int line);
+  void change_yarn(int yarn) { yarn_ = yarn; }
+  // Row 1 is worked from the wrong side (knitspeak's "Row 1 (WS):"); before any row.
+  std::optional<std::string> start_on_wrong_side();
+  // Why no row can be worked now ("no live stitches ..."), or nothing.
+  std::optional<std::string> no_live_stitches() const;
+  // Works written instructions (parsed from `source`) across the live stitches in the
+  // current yarn as the next row, from `where`.
+  std::optional<std::string> work_text(const RowText& text, std::string_view source, const SourceLocation& where);
+  // Adds a course given in face view: it must work exactly the live stitches; checks what
+  // it leaves on the needle.
+  std::optional<std::string> add(std::vector<Op> ops, const SourceLocation& where);
+  std::optional<std::string> bind_off(int line);
+
+  // What a course of these stitches takes from the heap once added, for the caller's
+  // memory cap: the course, its stitches, its file name, and the list's next growth.
+  std::size_t cost(std::size_t stitches, const SourceLocation& where) const;
+
+  // A point to come back to: the work as it was before a verb. Marks nest: restoring one
+  // undoes everything since, and the marks taken since are spent.
+  struct Mark {
+    std::size_t courses = 0;
+    int live = 0, yarn = 0, cast_on = 0, cast_on_yarn = 0, cast_on_line = 0, bind_off_line = 0;
+    long long loops = 0;
+    bool bound_off = false, wrong_side_first = false;
+    std::vector<bool> purl_faced;
+  };
+  Mark mark() const;
+  void restore(const Mark& m);
+
+ private:
+  Pattern pattern_;
+  Limits limits_;
+  int live_ = 0;
+  int yarn_ = 0;
+  long long loops_ = 0;
+  int cast_on_line_ = 0, bind_off_line_ = 0;
+  bool wrong_side_first_ = false;
+  std::vector<bool> purl_faced_;  // per live stitch, face order: shows as a purl on the face
+};
+
+}  // namespace knitc::language
