@@ -28,6 +28,7 @@
 #include "bench.hpp"
 #include "compile.hpp"
 #include "measure/measure.hpp"
+#include "mesh/bounds.hpp"
 #include "render.hpp"
 #include "runtime.hpp"
 #include "writers/writers.hpp"
@@ -140,15 +141,12 @@ int write(const std::vector<knitc::writers::OutputFile>& files) {
 
 void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, double relax_seconds) {
   std::size_t vertices = 0, elements = 0;
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (const auto& p : fabric.mesh.primitives) {
     vertices += p.positions.size();
     elements += p.indices.size();
-    for (const auto& v : p.positions) {
-      lo = glm::min(lo, v);
-      hi = glm::max(hi, v);
-    }
   }
+  const knitc::mesh::Bounds box = knitc::mesh::bounds(fabric.mesh);
+  const glm::vec3 lo = box.min, hi = box.max;
   std::size_t samples = 0;
   for (const auto& piece : fabric.pieces) samples += piece.samples.size();
   fmt::print(stderr, "pattern     {}\n", pattern.name);

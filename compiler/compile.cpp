@@ -55,8 +55,7 @@ void report(const CompileOptions& options, const char* stage, double fraction) {
 
 Fabric compile(const Pattern& pattern, const CompileOptions& options) {
   assert(options.sides >= 3 && options.chord_tolerance > 0.0);
-  std::uint64_t loops = static_cast<std::uint64_t>(pattern.cast_on);
-  for (const Course& c : pattern.courses) loops += c.ops.size();
+  const auto loops = static_cast<std::uint64_t>(loops_of(pattern));
   if (loops > max_loops)
     throw CompileError(where_it_passes(pattern, static_cast<double>(max_loops) / static_cast<double>(loops)) + "the fabric has " +
                        std::to_string(loops) + " loops; knitc lays out at most " + std::to_string(max_loops) +

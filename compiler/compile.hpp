@@ -59,10 +59,10 @@ struct Fabric {
   relax::Stats relaxation;         // when relaxed
 };
 
-// Sizes past which compile() refuses a fabric rather than run out of memory: about
-// 14 GB at peak on the way to the file, and the loops that take minutes before the mesh is even sized.
-inline constexpr std::uint64_t max_vertices = 80'000'000;
-inline constexpr std::uint64_t max_loops = 2'000'000;
+// Sizes past which compile() refuses a fabric rather than run out of memory (the
+// limits, declared with the pattern).
+inline constexpr std::uint64_t max_vertices = limits::mesh_vertices;
+inline constexpr std::uint64_t max_loops = limits::fabric_loops;
 
 // A pattern the compiler cannot make geometry for (yet). what() is "file:line: ...".
 class CompileError : public std::runtime_error {

@@ -14,4 +14,10 @@ int consumed(const Course& course) {
   return n;
 }
 
+long long loops_of(const Pattern& pattern) {
+  long long loops = pattern.cast_on;
+  for (const Course& c : pattern.courses) loops += produced(c);
+  return loops;
+}
+
 }  // namespace knitc

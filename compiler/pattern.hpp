@@ -78,8 +78,21 @@ struct Pattern {
   bool operator==(const Pattern&) const = default;
 };
 
+// What knitc takes, declared once. The runtime refuses a script past the first two; the
+// compiler refuses to lay out a fabric past the third or mesh one past the fourth (knitc
+// check and chart take what the runtime does).
+namespace limits {
+inline constexpr long long stitches_on_needle = 100'000;   // after any course
+inline constexpr long long script_loops = 20'000'000;      // in a pattern a script makes
+inline constexpr long long fabric_loops = 2'000'000;       // in a fabric the compiler lays out
+inline constexpr long long mesh_vertices = 80'000'000;     // in its mesh: about 14 GB at peak on the way to the file
+}  // namespace limits
+
 // Live stitches after the course: the loops it leaves on the needle.
 int produced(const Course& course);
+// The loops of the whole fabric: the cast-on's and every course's. The one count the
+// limits are checked against.
+long long loops_of(const Pattern& pattern);
 // Live stitches the course works.
 int consumed(const Course& course);
 

@@ -8,22 +8,6 @@
 
 namespace knitc::render::detail {
 
-Bounds bounds(const mesh::Mesh& mesh) {
-  Bounds b;
-  for (const auto& p : mesh.primitives)
-    for (const auto& v : p.positions) {
-      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) continue;
-      if (b.empty) {
-        b.min = b.max = v;
-        b.empty = false;
-      } else {
-        b.min = glm::min(b.min, v);
-        b.max = glm::max(b.max, v);
-      }
-    }
-  return b;
-}
-
 Camera frame(const Bounds& box, bool from_back, float aspect) {
   // An empty mesh still gets a sensible 10 mm view around the origin.
   const glm::vec3 lo = box.empty ? glm::vec3(-5.0f) : box.min;

@@ -5,17 +5,11 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "mesh/mesh.hpp"
+#include "mesh/bounds.hpp"
 
 namespace knitc::render::detail {
 
-struct Bounds {
-  glm::vec3 min{0.0f}, max{0.0f};
-  bool empty = true;
-};
-
-// The box around every finite position of every primitive.
-Bounds bounds(const mesh::Mesh& mesh);
+using mesh::Bounds;
 
 struct Camera {
   glm::mat4 view{1.0f};        // world (mm) to eye: the camera looks down eye -Z, +Y up

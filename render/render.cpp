@@ -62,7 +62,7 @@ std::string png(const mesh::Mesh& mesh, const RenderOptions& options) {
   image.height = h;
   image.rgb.assign(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(h) * 3, 0);
 
-  const detail::Bounds box = detail::bounds(mesh);
+  const mesh::Bounds box = mesh::bounds(mesh);
   const float aspect = static_cast<float>(w) / static_cast<float>(h);
   const auto draw_view = [&](bool from_back, int x0) {
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

@@ -31,11 +31,6 @@ constexpr std::array<Weight, 8> weights{{
 }};
 constexpr double wpi_flattening = 0.85;
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
 std::optional<double> weight_diameter(const std::string& name) {
   const std::string key = lower(name);
   for (const Weight& w : weights) {

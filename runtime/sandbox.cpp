@@ -178,7 +178,7 @@ int load_text(lua_State* L) {
   const char* chunk = luaL_checklstring(L, 1, &len);
   const char* name = luaL_optstring(L, 2, "=(load)");
   const bool has_env = !lua_isnone(L, 4);
-  charge(L, 2 * len + 1);  // compiling costs a few instructions' worth per byte
+  charge(L, 4 * len + 100);  // compiling costs a few instructions' worth per byte
   const int status = luaL_loadbufferx(L, chunk, len, name, "t");
   if (status != LUA_OK) {
     raise_if_stopped(L, status);

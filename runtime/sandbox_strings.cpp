@@ -264,6 +264,7 @@ int rep(lua_State* L) {
   const lua_Integer n = luaL_checkinteger(L, 2);
   std::size_t separator_length = 0;
   const char* separator = luaL_optlstring(L, 3, "", &separator_length);
+  charge(L, 20);  // the call itself
   if (n <= 0 || s.size() + separator_length == 0) {
     lua_pushliteral(L, "");
     return 1;

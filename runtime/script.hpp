@@ -85,8 +85,8 @@ std::span<const Verb> verb_table();
 int verb_entry(lua_State* L);  // upvalue 1: the Verb, as a light userdata
 
 // Limits of a fabric.
-inline constexpr long long max_stitches = 100'000;  // per course
-inline constexpr long long max_loops = 20'000'000;  // in the whole fabric
+inline constexpr long long max_stitches = limits::stitches_on_needle;  // per course
+inline constexpr long long max_loops = limits::script_loops;          // in the whole fabric
 inline constexpr long long max_table_keys = 10'000;  // in a table a verb reads (pattern{}, a legend)
 
 }  // namespace knitc::runtime

@@ -410,7 +410,7 @@ int verb_entry(lua_State* L) {
     fail(L, std::string(verb.name) + " was called while " + s.running_verb +
                 " was still running (from a metamethod of its arguments); call the pattern's verbs from the script "
                 "itself");
-  charge(L, 100);
+  charge(L, 300);  // a verb call, its checks and its undo mark
   // require runs a module, whose own lines call verbs: it does not hold the others off.
   const bool holds = verb.function != require_verb;
   struct Hold {

@@ -133,15 +133,17 @@ TEST_P(Hostile, StopsCleanly) {
   SCOPED_TRACE(name + ": exit " + std::to_string(r.exit_code) + " after " + std::to_string(r.seconds) + " s, peak " +
                std::to_string(r.peak_kib / 1024) + " MiB\n" + r.err.substr(0, 2000));
   EXPECT_EQ(r.exit_code, expect.exit_code);
+  // A script the work budget or the memory cap stops on an idle machine may meet the
+  // deadline first on a loaded one, or in an unoptimised build: any of the limits is the
+  // promise kept (the peak memory is checked below all the same).
+  const bool stands_in = r.err.find("pattern ran for more than") != std::string::npos &&
+                         (expect.text == "too long" || expect.text == "MiB of memory");
 #ifdef KNITC_SANITIZED
   // Unoptimised and under AddressSanitizer, knitc's C++ runs several times slower and
-  // frees a quarter gigabyte slowly: the deadline (3 s) stops what the work budget and
-  // the memory cap stop in the release build, and the bound allows for the teardown.
+  // frees a quarter gigabyte slowly: the bound allows for the teardown.
   EXPECT_LT(r.seconds, 10.0);
-  const bool deadline = r.err.find("pattern ran for more than") != std::string::npos;
 #else
   EXPECT_LT(r.seconds, 5.0);
-  const bool deadline = false;
 #endif
   // The memory cap is 256 MiB; the suite allows 24 MiB for malloc's own keeping. Under
   // AddressSanitizer every block carries redzones and freed ones sit in quarantine: the
@@ -166,7 +168,7 @@ TEST_P(Hostile, StopsCleanly) {
     last = last.substr(last.rfind('\n') == std::string::npos ? 0 : last.rfind('\n') + 1);
     EXPECT_TRUE(std::regex_search(last, std::regex("^" + name + "\\.lua:[1-9][0-9]*: "))) << "not located: " << last;
     EXPECT_LT(last.size(), 4100u);
-    EXPECT_TRUE(r.err.find(expect.text) != std::string::npos || deadline) << "the message lacks \"" << expect.text << "\"";
+    EXPECT_TRUE(r.err.find(expect.text) != std::string::npos || stands_in) << "the message lacks \"" << expect.text << "\"";
   } else if (!expect.text.empty()) {
     EXPECT_NE(r.err.find(expect.text), std::string::npos) << "stderr lacks \"" << expect.text << "\"";
   }

@@ -69,19 +69,25 @@ std::array<glm::dvec3, loop_points> plain_loop(const Gauge& g) {
 
 Layout lay_out(const Pattern& pattern) { return lay_out(pattern, knit_graph::build(pattern)); }
 
-Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
+namespace {
+
+// The passes of lay_out, in order. Each works on the layout made so far.
+
+// x of a needle position's centre in its course.
+double centre_x(const Layout& out, int course, int slot) { return out.origin_x[course] + (slot + 0.5) * out.loop_width; }
+
+// The courses: their needles, where each starts, which way each is worked.
+Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, bool bind_off) {
   Layout out;
   const Gauge& g = pattern.gauge;
-  const double W = g.loop_width, C = g.course_spacing(), T = g.thickness;
+  const double W = g.loop_width, T = g.thickness;
   double thickest = 0.0;
   for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
   out.knitting = pattern.knitting;
   out.loop_width = W;
-  out.course_spacing = C;
+  out.course_spacing = g.course_spacing();
   out.float_behind = -(0.3 * T + 0.6 * thickest);
   out.float_in_front = T + 0.6 * thickest;
-
-  const bool bind_off = pattern.bound_off && !graph.live.empty();
   out.needle = graph.needle;
   if (bind_off) out.needle.push_back(static_cast<int>(graph.live.size()));
   out.courses = static_cast<int>(out.needle.size());
@@ -98,12 +104,78 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
     out.direction.push_back(direction);
   }
   out.floats = graph.floats;
+  return out;
+}
 
-  // Every loop at its needle position by its stitch's template.
-  const auto plain = plain_loop(g);
-  auto centre_x = [&](int course, int slot) { return out.origin_x[course] + (slot + 0.5) * W; };
-  std::vector<char> purl_column;  // per loop: a tuck knitted off by a purl (set below)
-  auto place = [&](Loop& l) {
+// The graph's loops, each with the template it is drawn by.
+void take_loops(Layout& out, const knit_graph::Graph& graph) {
+  const double W = out.loop_width;
+  for (std::size_t i = 0; i < graph.loops.size(); ++i) {
+    const knit_graph::Loop& k = graph.loops[i];
+    Loop& l = out.loops[i];
+    l.course = k.course;
+    l.wale = k.slot;
+    l.stitch = k.stitch;
+    l.yarn = k.yarn;
+    l.order = k.order;
+    const StitchDef& s = stitch(k.stitch);
+    if (k.held) l.shape = Template::tuck;
+    else if (purled(s)) l.shape = Template::purl;
+    else if (s.family == StitchFamily::cable && s.cable.purl_background) {
+      // A twist's travelling stitches (those crossing in front) are knit, the rest purled.
+      // In a three-part cross only the middle, which stays put, is purled.
+      const double from = centre_x(out, graph.loops[k.parents.front()].course, graph.loops[k.parents.front()].slot);
+      const double to = centre_x(out, k.course, k.slot);
+      const bool in_front = s.cable.front ? from > to : from < to;
+      l.shape = (s.cable.middle > 0 ? std::abs(from - to) > 0.25 * W : in_front) ? Template::knit : Template::purl;
+    }
+  }
+}
+
+// The bind-off course after the graph's loops, worked with the yarn that worked last;
+// its loops' parents are the live stitches.
+void add_bind_off(Layout& out, const Pattern& pattern, const knit_graph::Graph& graph, std::vector<std::vector<int>>& parents) {
+  const std::size_t graph_loops = graph.loops.size();
+  const int course = out.courses - 1;
+  int yarn = pattern.cast_on_yarn;
+  if (!pattern.courses.empty()) {
+    const Course& last = pattern.courses.back();
+    if (!last.ops.empty()) yarn = (last.side == Side::right ? last.ops.front() : last.ops.back()).yarn;
+  }
+  int next_order = 0;
+  for (const knit_graph::Loop& k : graph.loops) {
+    if (k.yarn == yarn) next_order = std::max(next_order, k.order + 1);
+  }
+  const int n = static_cast<int>(graph.live.size());
+  for (int s = 0; s < n; ++s) {
+    Loop& l = out.loops[graph_loops + s];
+    l.course = course;
+    l.wale = s;
+    l.stitch = stitch_id("k");
+    l.yarn = yarn;
+    l.order = next_order + (out.direction[course] < 0 ? n - 1 - s : s);
+    l.shape = Template::bind_off;
+    parents[graph_loops + s] = graph.live[s];
+  }
+}
+
+// A tuck loop is knitted off with the loop it is held with by a later loop: purled
+// there, the tuck lies on the face's side. Per loop: 1 for such a tuck.
+std::vector<char> tucks_purled_off(const Layout& out, const std::vector<std::vector<int>>& parents) {
+  std::vector<char> purl_column(out.loops.size(), 0);
+  for (std::size_t i = 0; i < out.loops.size(); ++i)
+    if (out.loops[i].shape == Template::purl)
+      for (int p : parents[i])
+        if (out.loops[static_cast<std::size_t>(p)].shape == Template::tuck) purl_column[static_cast<std::size_t>(p)] = 1;
+  return purl_column;
+}
+
+// Every loop at its needle position by its stitch's template.
+void place_templates(Layout& out, const Pattern& pattern, const std::vector<char>& purl_column) {
+  const auto plain = plain_loop(pattern.gauge);
+  const double W = out.loop_width, C = out.course_spacing;
+  for (std::size_t index = 0; index < out.loops.size(); ++index) {
+    Loop& l = out.loops[index];
     const glm::dvec3 origin(out.origin_x[l.course] + l.wale * W, l.course * C, 0.0);
     const double d = pattern.yarns[l.yarn].diameter;
     for (int i = 0; i < loop_points; ++i) {
@@ -115,7 +187,7 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
           // Behind the loop it is held with, on the side the loop that knits both off comes
           // from (the face's back for a knit, its front for a purl), and a little below its
           // raised head, so the two heads never lie on one line seen from the face.
-          p.z = (purl_column[static_cast<std::size_t>(&l - out.loops.data())] ? -1.0 : 1.0) * (-0.35 * p.z - 0.6 * d * head[i]);
+          p.z = (purl_column[index] ? -1.0 : 1.0) * (-0.35 * p.z - 0.6 * d * head[i]);
           p.y -= 0.2 * d * head[i];
           break;
         case Template::bind_off:
@@ -132,90 +204,39 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
     }
     // Exactly the next loop's P0, not origin + W rounded differently.
     l.data_points[loop_points - 1] = glm::dvec3(out.origin_x[l.course] + (l.wale + 1) * W, l.course * C, 0.0);
-  };
-
-  const std::size_t graph_loops = graph.loops.size();
-  out.loops.resize(graph_loops + (bind_off ? graph.live.size() : 0));
-  purl_column.assign(out.loops.size(), 0);
-  for (std::size_t i = 0; i < graph_loops; ++i) {
-    const knit_graph::Loop& k = graph.loops[i];
-    Loop& l = out.loops[i];
-    l.course = k.course;
-    l.wale = k.slot;
-    l.stitch = k.stitch;
-    l.yarn = k.yarn;
-    l.order = k.order;
-    const StitchDef& s = stitch(k.stitch);
-    if (k.held) l.shape = Template::tuck;
-    else if (purled(s)) l.shape = Template::purl;
-    else if (s.family == StitchFamily::cable && s.cable.purl_background) {
-      // A twist's travelling stitches (those crossing in front) are knit, the rest purled.
-      // In a three-part cross only the middle, which stays put, is purled.
-      const double from = centre_x(graph.loops[k.parents.front()].course, graph.loops[k.parents.front()].slot);
-      const double to = centre_x(k.course, k.slot);
-      const bool in_front = s.cable.front ? from > to : from < to;
-      l.shape = (s.cable.middle > 0 ? std::abs(from - to) > 0.25 * W : in_front) ? Template::knit : Template::purl;
-    }
   }
-  // The parents of every loop, the bind-off's too (the live stitches it works).
-  std::vector<std::vector<int>> parents(out.loops.size());
-  for (std::size_t i = 0; i < graph_loops; ++i) parents[i] = graph.loops[i].parents;
-  if (bind_off) {
-    const int course = out.courses - 1;
-    // The bind-off is worked with the yarn that worked last.
-    int yarn = pattern.cast_on_yarn;
-    if (!pattern.courses.empty()) {
-      const Course& last = pattern.courses.back();
-      if (!last.ops.empty()) yarn = (last.side == Side::right ? last.ops.front() : last.ops.back()).yarn;
-    }
-    int next_order = 0;
-    for (const knit_graph::Loop& k : graph.loops) {
-      if (k.yarn == yarn) next_order = std::max(next_order, k.order + 1);
-    }
-    const int n = static_cast<int>(graph.live.size());
-    for (int s = 0; s < n; ++s) {
-      Loop& l = out.loops[graph_loops + s];
-      l.course = course;
-      l.wale = s;
-      l.stitch = stitch_id("k");
-      l.yarn = yarn;
-      l.order = next_order + (out.direction[course] < 0 ? n - 1 - s : s);
-      l.shape = Template::bind_off;
-      parents[graph_loops + s] = graph.live[s];
-    }
-  }
-  // A tuck loop is knitted off with the loop it is held with by a later loop: purled
-  // there, the tuck lies on the face's side.
-  for (std::size_t i = 0; i < out.loops.size(); ++i)
-    if (out.loops[i].shape == Template::purl)
-      for (int p : parents[i])
-        if (out.loops[static_cast<std::size_t>(p)].shape == Template::tuck) purl_column[static_cast<std::size_t>(p)] = 1;
-  for (Loop& l : out.loops) place(l);
+}
 
-  // How far each cable loop leans (mm, its parent's centre less its own), 0 for others.
+// How far each cable loop leans (mm, its parent's centre less its own), 0 for others.
+std::vector<double> cable_leans(const Layout& out, const std::vector<std::vector<int>>& parents) {
   std::vector<double> lean(out.loops.size(), 0.0);
   for (std::size_t i = 0; i < out.loops.size(); ++i) {
     const Loop& l = out.loops[i];
     if (parents[i].empty() || stitch(l.stitch).family != StitchFamily::cable) continue;
     const Loop& parent = out.loops[static_cast<std::size_t>(parents[i].front())];
-    lean[i] = centre_x(parent.course, parent.wale) - centre_x(l.course, l.wale);
+    lean[i] = centre_x(out, parent.course, parent.wale) - centre_x(out, l.course, l.wale);
   }
+  return lean;
+}
+
+// Each loop pulled through its parents. A cable's loop leans from its parent's head to
+// its new needle position, passing in front of or behind the loops it crosses. Other
+// loops meet their parents halfway: the parents' heads and the loop's legs, so that
+// decreases gather with one parent on top; a parent whose child is more than one course
+// up (slipped, tucked) is stretched up to it.
+void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::vector<int>>& parents,
+                  const std::vector<double>& lean) {
+  const double W = out.loop_width, C = out.course_spacing;
   auto leans_otherwise = [&](std::size_t i, std::size_t j) {  // j: i's neighbour in its course, if any
     const Loop &a = out.loops[i], &b = out.loops[j];
     return a.course != b.course || std::abs(a.wale - b.wale) != 1 || std::abs(lean[i] - lean[j]) > 1e-9;
   };
-
-  // Each loop pulled through its parents. A cable's loop leans from its parent's head to
-  // its new needle position, passing in front of or behind the loops it crosses. Other
-  // loops meet their parents halfway: the parents' heads and the loop's legs, so that
-  // decreases gather with one parent on top; a parent whose child is more than one course
-  // up (slipped, tucked) is stretched up to it.
   for (std::size_t i = 0; i < out.loops.size(); ++i) {
     if (parents[i].empty()) continue;
     Loop& child = out.loops[i];
     const StitchDef& s = stitch(child.stitch);
     const double d = pattern.yarns[child.yarn].diameter;
-    const double cx = centre_x(child.course, child.wale);
+    const double cx = centre_x(out, child.course, child.wale);
     if (s.family == StitchFamily::cable) {
       Loop& parent = out.loops[parents[i].front()];
       // In F cables the stitches moving left cross in front, in B those moving right; a
@@ -237,14 +258,14 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
       continue;
     }
     double mean = 0.0;
-    for (int p : parents[i]) mean += centre_x(out.loops[p].course, out.loops[p].wale);
+    for (int p : parents[i]) mean += centre_x(out, out.loops[p].course, out.loops[p].wale);
     mean /= static_cast<double>(parents[i].size());
     // The legs move at most 0.4 W, or their sinker loops would double back on the
     // neighbours' (P15 lies 0.25 W inside P16); the parents' heads take the rest.
     const double meet = cx + std::clamp(0.5 * (mean - cx), -0.4 * W, 0.4 * W);
     for (std::size_t k = 0; k < parents[i].size(); ++k) {
       Loop& parent = out.loops[parents[i][k]];
-      const double px = centre_x(parent.course, parent.wale);
+      const double px = centre_x(out, parent.course, parent.wale);
       double dz = 0.0;
       if (s.family == StitchFamily::decrease && parents[i].size() > 1)
         dz = (k == top_parent(s, parents[i].size()) ? 0.5 : -0.5) * d;
@@ -253,6 +274,21 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
     }
     for (int j = 0; j < loop_points; ++j) child.data_points[j].x += legs[j] * (meet - cx);
   }
+}
+
+}  // namespace
+
+Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
+  const bool bind_off = pattern.bound_off && !graph.live.empty();
+  Layout out = frame_courses(pattern, graph, bind_off);
+  out.loops.resize(graph.loops.size() + (bind_off ? graph.live.size() : 0));
+  take_loops(out, graph);
+  // The parents of every loop, the bind-off's too (the live stitches it works).
+  std::vector<std::vector<int>> parents(out.loops.size());
+  for (std::size_t i = 0; i < graph.loops.size(); ++i) parents[i] = graph.loops[i].parents;
+  if (bind_off) add_bind_off(out, pattern, graph, parents);
+  place_templates(out, pattern, tucks_purled_off(out, parents));
+  pull_through(out, pattern, parents, cable_leans(out, parents));
   return out;
 }
 

@@ -87,11 +87,6 @@ constexpr auto core = std::to_array<StitchDef>({
     cable("T4B", "2/2 RPC", 4, 2, false, true, "twist: two knit stitches cross right in front of two purls"),
 });
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
-  return out;
-}
 
 constexpr StitchDef with(StitchDef d, bool twisted, bool below) {
   d.twisted = twisted;
@@ -310,6 +305,12 @@ std::string nearest_stitch_name(std::string_view word) {
     }
   }
   return best;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
+  return out;
 }
 
 }  // namespace knitc

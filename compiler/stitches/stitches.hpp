@@ -71,6 +71,10 @@ std::optional<StitchId> wrong_side_face(StitchId id);
 // The known name or alias nearest to `word` (edit distance), for "did you mean" hints.
 std::string nearest_stitch_name(std::string_view word);
 
+// `s` in lower case (ASCII letters only, as the pattern language's spellings are): the one
+// lowercasing of the stitch table, the written rows, knitspeak and the declarations.
+std::string lower(std::string_view s);
+
 // Edit distance (Levenshtein, case-insensitive), for hints.
 int edit_distance(std::string_view a, std::string_view b);
 

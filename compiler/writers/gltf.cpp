@@ -13,6 +13,7 @@
 #include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
 
+#include "mesh/bounds.hpp"
 #include "writers/writers.hpp"
 
 namespace knitc::writers {
@@ -126,36 +127,8 @@ std::string raw_bytes(const Block& b) {
   return bytes;
 }
 
-}  // namespace
-
-void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out, const GlbOptions& options) {
-  static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float));
-  if (mesh.primitives.empty()) throw std::runtime_error("glTF needs at least one primitive; the mesh is empty");
-  json doc;
-  doc["asset"] = {{"version", "2.0"}, {"generator", generator}};
-  json used = json::array();
-  if (!mesh.materials.empty()) used.push_back("KHR_materials_sheen");
-  // The quantisation grid: the whole mesh's box in 65535 steps per axis.
-  glm::vec3 box_lo(std::numeric_limits<float>::max()), box_hi(-std::numeric_limits<float>::max());
-  for (const mesh::Primitive& p : mesh.primitives) {
-    for (const auto& v : p.positions) {
-      box_lo = glm::min(box_lo, v);
-      box_hi = glm::max(box_hi, v);
-    }
-  }
-  const glm::vec3 step = glm::max((box_hi - box_lo) / 65535.0f, glm::vec3(1e-6f));
-  json node = {{"name", "fabric"}, {"mesh", 0}};
-  if (options.quantize) {
-    used.push_back("KHR_mesh_quantization");
-    doc["extensionsRequired"] = json::array({"KHR_mesh_quantization"});
-    node["translation"] = {box_lo.x * metres_per_mm, box_lo.y * metres_per_mm, box_lo.z * metres_per_mm};
-    node["scale"] = {step.x * metres_per_mm, step.y * metres_per_mm, step.z * metres_per_mm};
-  }
-  if (!used.empty()) doc["extensionsUsed"] = std::move(used);
-  doc["scene"] = 0;
-  doc["scenes"] = json::array({{{"nodes", json::array({0})}}});
-  doc["nodes"] = json::array({std::move(node)});
-
+// The materials: base colour, not metallic, and the sheen of fibres.
+json materials_json(const mesh::Mesh& mesh) {
   json materials = json::array();
   for (const mesh::Material& m : mesh.materials) {
     materials.push_back(
@@ -170,33 +143,37 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
             {{"sheenColorFactor", {m.sheen_color.r, m.sheen_color.g, m.sheen_color.b}},
              {"sheenRoughnessFactor", m.sheen_roughness}}}}}});
   }
-  if (!materials.empty()) doc["materials"] = std::move(materials);
+  return materials;
+}
 
+// Where every attribute and index array goes in the binary chunk, and the JSON that says so.
+struct BinaryLayout {
   json views = json::array(), accessors = json::array(), primitives = json::array();
   std::vector<Block> blocks;
-  std::size_t offset = 0;
+  std::size_t bytes = 0;  // the uncompressed binary's length
+};
+
+BinaryLayout lay_out_binary(const mesh::Mesh& mesh, const GlbOptions& options, glm::vec3 box_lo, glm::vec3 step) {
+  BinaryLayout b;
   auto add = [&](const mesh::Primitive& p, Block::What what, std::size_t bytes, int target, json accessor,
                  std::size_t stride = 0) {
     const std::size_t count = accessor["count"].get<std::size_t>();
-    blocks.push_back({offset, bytes, &p, what, options.quantize, box_lo, step, count == 0 ? 4 : bytes / count, count});
-    json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", target}};
+    b.blocks.push_back({b.bytes, bytes, &p, what, options.quantize, box_lo, step, count == 0 ? 4 : bytes / count, count});
+    json view = {{"buffer", 0}, {"byteOffset", b.bytes}, {"byteLength", bytes}, {"target", target}};
     if (stride != 0) view["byteStride"] = stride;
-    views.push_back(std::move(view));
-    accessor["bufferView"] = views.size() - 1;
-    accessors.push_back(std::move(accessor));
-    offset += padded(bytes);
-    return accessors.size() - 1;
+    b.views.push_back(std::move(view));
+    accessor["bufferView"] = b.views.size() - 1;
+    b.accessors.push_back(std::move(accessor));
+    b.bytes += padded(bytes);
+    return b.accessors.size() - 1;
   };
   for (const mesh::Primitive& p : mesh.primitives) {
+    // In metres, exactly as the values written (scaling by a positive factor keeps order).
+    const mesh::Bounds pb = mesh::bounds(p);
     std::array<double, 3> lo, hi;
-    lo.fill(std::numeric_limits<double>::infinity());
-    hi.fill(-std::numeric_limits<double>::infinity());
-    for (const auto& v : p.positions) {
-      for (int k = 0; k < 3; ++k) {
-        const double m = static_cast<double>(v[k] * metres_per_mm);  // exactly the value written
-        lo[k] = std::min(lo[k], m);
-        hi[k] = std::max(hi[k], m);
-      }
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = static_cast<double>(pb.min[k] * metres_per_mm);
+      hi[k] = static_cast<double>(pb.max[k] * metres_per_mm);
     }
     json prim;
     json attributes;
@@ -233,57 +210,54 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
                           {{"componentType", gl_unsigned_int}, {"count", p.indices.size()}, {"type", "SCALAR"}});
     prim["material"] = p.material;
     prim["mode"] = gltf_mode(p.mode);
-    primitives.push_back(std::move(prim));
+    b.primitives.push_back(std::move(prim));
   }
-  doc["meshes"] = json::array({{{"name", "fabric"}, {"primitives", std::move(primitives)}}});
-  doc["accessors"] = std::move(accessors);
-  // EXT_meshopt_compression: each view's bytes encoded by meshoptimizer into the binary
-  // chunk; the uncompressed layout stays as a fallback buffer with no data.
-  std::vector<std::string> encoded;
-  std::size_t binary = offset;
-  if (options.meshopt) {
-    binary = 0;
-    for (std::size_t i = 0; i < blocks.size(); ++i) {
-      const Block& b = blocks[i];
-      const std::string raw = raw_bytes(b);
-      std::string blob;
-      const char* mode = "ATTRIBUTES";
-      if (b.what == Block::What::indices) {
-        const auto* indices = reinterpret_cast<const unsigned int*>(raw.data());
-        const std::size_t vertices = b.primitive->positions.size();
-        if (b.primitive->mode == mesh::Mode::triangles) {
-          mode = "TRIANGLES";
-          blob.resize(meshopt_encodeIndexBufferBound(b.count, vertices));
-          blob.resize(meshopt_encodeIndexBuffer(reinterpret_cast<unsigned char*>(blob.data()), blob.size(), indices, b.count));
-        } else {
-          mode = "INDICES";
-          blob.resize(meshopt_encodeIndexSequenceBound(b.count, vertices));
-          blob.resize(meshopt_encodeIndexSequence(reinterpret_cast<unsigned char*>(blob.data()), blob.size(), indices, b.count));
-        }
-      } else {
-        blob.resize(meshopt_encodeVertexBufferBound(b.count, b.element));
-        blob.resize(meshopt_encodeVertexBuffer(reinterpret_cast<unsigned char*>(blob.data()), blob.size(), raw.data(), b.count,
-                                               b.element));
-        views[i]["byteStride"] = b.element;
-      }
-      views[i]["buffer"] = 1;
-      views[i]["extensions"]["EXT_meshopt_compression"] = {{"buffer", 0},        {"byteOffset", binary},
-                                                           {"byteLength", blob.size()}, {"byteStride", b.element},
-                                                           {"mode", mode},       {"count", b.count}};
-      binary += padded(blob.size());
-      encoded.push_back(std::move(blob));
-    }
-    doc["extensionsUsed"].push_back("EXT_meshopt_compression");
-    doc["extensionsRequired"].push_back("EXT_meshopt_compression");
-    doc["buffers"] = json::array({{{"byteLength", binary}},
-                                  {{"byteLength", offset}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}});
-  } else {
-    doc["buffers"] = json::array({{{"byteLength", offset}}});
-  }
-  doc["bufferViews"] = std::move(views);
+  return b;
+}
 
-  std::string text = doc.dump();
-  text.resize(padded(text.size()), ' ');  // the JSON chunk is padded with spaces
+// EXT_meshopt_compression: each view's bytes encoded by meshoptimizer into the binary
+// chunk (the views then point there); returns the encoded blobs, and their length in
+// `binary`.
+std::vector<std::string> encode_meshopt(BinaryLayout& layout, std::size_t& binary) {
+  std::vector<std::string> encoded;
+  binary = 0;
+  for (std::size_t i = 0; i < layout.blocks.size(); ++i) {
+    const Block& b = layout.blocks[i];
+    const std::string raw = raw_bytes(b);
+    std::string blob;
+    const char* mode = "ATTRIBUTES";
+    if (b.what == Block::What::indices) {
+      const auto* indices = reinterpret_cast<const unsigned int*>(raw.data());
+      const std::size_t vertices = b.primitive->positions.size();
+      if (b.primitive->mode == mesh::Mode::triangles) {
+        mode = "TRIANGLES";
+        blob.resize(meshopt_encodeIndexBufferBound(b.count, vertices));
+        blob.resize(meshopt_encodeIndexBuffer(reinterpret_cast<unsigned char*>(blob.data()), blob.size(), indices, b.count));
+      } else {
+        mode = "INDICES";
+        blob.resize(meshopt_encodeIndexSequenceBound(b.count, vertices));
+        blob.resize(meshopt_encodeIndexSequence(reinterpret_cast<unsigned char*>(blob.data()), blob.size(), indices, b.count));
+      }
+    } else {
+      blob.resize(meshopt_encodeVertexBufferBound(b.count, b.element));
+      blob.resize(meshopt_encodeVertexBuffer(reinterpret_cast<unsigned char*>(blob.data()), blob.size(), raw.data(), b.count,
+                                             b.element));
+      layout.views[i]["byteStride"] = b.element;
+    }
+    layout.views[i]["buffer"] = 1;
+    layout.views[i]["extensions"]["EXT_meshopt_compression"] = {{"buffer", 0},        {"byteOffset", binary},
+                                                                {"byteLength", blob.size()}, {"byteStride", b.element},
+                                                                {"mode", mode},       {"count", b.count}};
+    binary += padded(blob.size());
+    encoded.push_back(std::move(blob));
+  }
+  return encoded;
+}
+
+// The .glb container: header, the JSON chunk (padded with spaces), the binary chunk.
+void write_chunks(std::ostream& out, std::string text, std::size_t binary, const BinaryLayout& layout,
+                  const std::vector<std::string>& encoded, bool meshopt) {
+  text.resize(padded(text.size()), ' ');
   const std::size_t total = 12 + 8 + text.size() + 8 + binary;
   if (total > std::numeric_limits<std::uint32_t>::max())
     throw std::runtime_error("the mesh is over the 4 GiB a .glb can hold; knit a smaller piece or use --quality draft");
@@ -295,15 +269,60 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
   put_u32(out, static_cast<std::uint32_t>(binary));
   put_u32(out, 0x004E4942u);  // BIN
-  if (options.meshopt) {
+  if (meshopt) {
     static constexpr char zeros[4] = {};
     for (const std::string& blob : encoded) {
       out.write(blob.data(), static_cast<std::streamsize>(blob.size()));
       out.write(zeros, static_cast<std::streamsize>(padded(blob.size()) - blob.size()));
     }
   } else {
-    for (const Block& b : blocks) write_block(b, out);
+    for (const Block& b : layout.blocks) write_block(b, out);
   }
+}
+
+}  // namespace
+
+void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out, const GlbOptions& options) {
+  static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float));
+  if (mesh.primitives.empty()) throw std::runtime_error("glTF needs at least one primitive; the mesh is empty");
+  json doc;
+  doc["asset"] = {{"version", "2.0"}, {"generator", generator}};
+  json used = json::array();
+  if (!mesh.materials.empty()) used.push_back("KHR_materials_sheen");
+  // The quantisation grid: the whole mesh's box in 65535 steps per axis.
+  const mesh::Bounds box = mesh::bounds(mesh);
+  const glm::vec3 box_lo = box.min, box_hi = box.max;
+  const glm::vec3 step = glm::max((box_hi - box_lo) / 65535.0f, glm::vec3(1e-6f));
+  json node = {{"name", "fabric"}, {"mesh", 0}};
+  if (options.quantize) {
+    used.push_back("KHR_mesh_quantization");
+    doc["extensionsRequired"] = json::array({"KHR_mesh_quantization"});
+    node["translation"] = {box_lo.x * metres_per_mm, box_lo.y * metres_per_mm, box_lo.z * metres_per_mm};
+    node["scale"] = {step.x * metres_per_mm, step.y * metres_per_mm, step.z * metres_per_mm};
+  }
+  if (!used.empty()) doc["extensionsUsed"] = std::move(used);
+  doc["scene"] = 0;
+  doc["scenes"] = json::array({{{"nodes", json::array({0})}}});
+  doc["nodes"] = json::array({std::move(node)});
+  if (json materials = materials_json(mesh); !materials.empty()) doc["materials"] = std::move(materials);
+
+  BinaryLayout layout = lay_out_binary(mesh, options, box_lo, step);
+  doc["meshes"] = json::array({{{"name", "fabric"}, {"primitives", std::move(layout.primitives)}}});
+  doc["accessors"] = std::move(layout.accessors);
+  std::vector<std::string> encoded;
+  std::size_t binary = layout.bytes;
+  if (options.meshopt) {
+    encoded = encode_meshopt(layout, binary);
+    // The uncompressed layout stays as a fallback buffer with no data.
+    doc["extensionsUsed"].push_back("EXT_meshopt_compression");
+    doc["extensionsRequired"].push_back("EXT_meshopt_compression");
+    doc["buffers"] = json::array({{{"byteLength", binary}},
+                                  {{"byteLength", layout.bytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}});
+  } else {
+    doc["buffers"] = json::array({{{"byteLength", layout.bytes}}});
+  }
+  doc["bufferViews"] = std::move(layout.views);
+  write_chunks(out, doc.dump(), binary, layout, encoded, options.meshopt);
 }
 
 std::string glb(const mesh::Mesh& mesh, const std::string& generator, const GlbOptions& options) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "mesh/bounds.hpp"
 #include "writers/writers.hpp"
 
 namespace knitc::writers {
@@ -50,8 +51,6 @@ std::string snapshot(const Pattern& pattern, const Fabric& fabric, const measure
   else
     out += "relaxation  off\n";
   std::size_t vertices = 0, elements = 0, triangles = 0;
-  double lo[3], hi[3];
-  for (int k = 0; k < 3; ++k) lo[k] = std::numeric_limits<double>::infinity(), hi[k] = -lo[k];
   // The geometry's hash: every position to 1 micrometre, every index, primitive by primitive.
   Fnv1a hash;
   for (const mesh::Primitive& p : fabric.mesh.primitives) {
@@ -59,11 +58,7 @@ std::string snapshot(const Pattern& pattern, const Fabric& fabric, const measure
     hash.add(static_cast<std::uint64_t>(p.mode));
     hash.add(p.positions.size());
     for (const auto& v : p.positions) {
-      for (int k = 0; k < 3; ++k) {
-        hash.add(static_cast<std::uint64_t>(micrometres(v[k])));
-        lo[k] = std::min(lo[k], static_cast<double>(v[k]));
-        hi[k] = std::max(hi[k], static_cast<double>(v[k]));
-      }
+      for (int k = 0; k < 3; ++k) hash.add(static_cast<std::uint64_t>(micrometres(v[k])));
     }
     for (std::uint32_t i : p.indices) hash.add(i);
     vertices += p.positions.size();
@@ -73,9 +68,9 @@ std::string snapshot(const Pattern& pattern, const Fabric& fabric, const measure
   out += "vertices    " + std::to_string(vertices) + "\n";
   out += "indices     " + std::to_string(elements) + "\n";
   out += "triangles   " + std::to_string(triangles) + "\n";
-  if (vertices > 0) {
-    out += "bounds mm   " + fixed(lo[0], 3) + " " + fixed(lo[1], 3) + " " + fixed(lo[2], 3) + " .. " + fixed(hi[0], 3) + " " +
-           fixed(hi[1], 3) + " " + fixed(hi[2], 3) + "\n";
+  if (const mesh::Bounds box = mesh::bounds(fabric.mesh); !box.empty) {
+    out += "bounds mm   " + fixed(box.min.x, 3) + " " + fixed(box.min.y, 3) + " " + fixed(box.min.z, 3) + " .. " +
+           fixed(box.max.x, 3) + " " + fixed(box.max.y, 3) + " " + fixed(box.max.z, 3) + "\n";
   }
   char h[32];
   std::snprintf(h, sizeof h, "%016llx", static_cast<unsigned long long>(hash.state));

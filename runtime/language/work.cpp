@@ -41,6 +41,7 @@ std::optional<std::string> Work::cast_on(int stitches, int yarn, int line) {
     return "cast_on's stitch count is " + std::to_string(stitches) + "; it must be from 1 to " + std::to_string(limits_.stitches);
   live_ = stitches;
   yarn_ = yarn;
+  loops_ = stitches;  // the cast-on's loops count, as loops_of counts them
   pattern_.cast_on = stitches;
   pattern_.cast_on_yarn = yarn;
   purl_faced_.assign(static_cast<std::size_t>(stitches), false);

@@ -18,8 +18,8 @@ namespace knitc::language {
 class Work {
  public:
   struct Limits {
-    long long stitches = 100'000;  // on the needle, after any course
-    long long loops = 20'000'000;  // in the whole fabric
+    long long stitches = limits::stitches_on_needle;  // on the needle, after any course
+    long long loops = limits::script_loops;           // in the whole fabric, the cast-on's too
   };
 
   Work() = default;

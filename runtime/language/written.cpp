@@ -406,12 +406,6 @@ class Parser {
 
 }  // namespace
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
-  return out;
-}
-
 std::string quote_row(std::string_view text) {
   constexpr std::size_t longest = 60;
   if (text.size() <= longest) return "\"" + std::string(text) + "\"";

@@ -72,8 +72,6 @@ std::variant<RowText, TextError> parse_row(std::string_view text, std::span<cons
 // `row` is the row's number, for messages.
 std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::string_view source, int live, int row);
 
-// The text lower-cased (ASCII), as the language compares knitters' words.
-std::string lower(std::string_view text);
 
 // A row's text in quotes for messages, shortened past 60 characters.
 std::string quote_row(std::string_view text);
