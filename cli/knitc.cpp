@@ -369,73 +369,68 @@ int main(int argc, char** argv) {
   return code;
 }
 
-int run(int argc, char** argv) {
+namespace {
+
+// Every subcommand and the arguments it fills.
+struct Commands {
   CLI::App app{"knitc: compiles knitting pattern scripts into yarn-level 3D fabric", "knitc"};
+  Args build, render, snapshot, chart, check, bench;
+  std::string bench_size = "150x250";
+  bool bench_header = false;
+  CLI::App *build_cmd = nullptr, *render_cmd = nullptr, *snapshot_cmd = nullptr, *chart_cmd = nullptr,
+           *check_cmd = nullptr, *bench_cmd = nullptr, *reference_cmd = nullptr;
+};
+
+void declare_commands(Commands& c) {
+  CLI::App& app = c.app;
   app.set_version_flag("--version", "knitc " KNITC_VERSION);
   app.require_subcommand(1);
 
-  Args b;
-  auto* build_cmd = app.add_subcommand("build", "compile a pattern script into a glTF binary (.glb)");
-  add_pattern_options(build_cmd, b);
-  build_cmd->add_option("-o,--output", b.output, "the .glb to write (- for standard output)")->required();
-  build_cmd->add_option("--centreline", b.centreline, "also write the centrelines and loop data points as JSON (mm)");
-  build_cmd->add_flag("--compress", b.compress,
-                      "a smaller file: positions (uint16) and normals (int8) quantised with KHR_mesh_quantization, then every "
-                      "buffer view encoded by meshoptimizer (EXT_meshopt_compression)");
-  add_compile_options(build_cmd, b);
+  c.build_cmd = app.add_subcommand("build", "compile a pattern script into a glTF binary (.glb)");
+  add_pattern_options(c.build_cmd, c.build);
+  c.build_cmd->add_option("-o,--output", c.build.output, "the .glb to write (- for standard output)")->required();
+  c.build_cmd->add_option("--centreline", c.build.centreline, "also write the centrelines and loop data points as JSON (mm)");
+  c.build_cmd->add_flag("--compress", c.build.compress,
+                        "a smaller file: positions (uint16) and normals (int8) quantised with KHR_mesh_quantization, then "
+                        "every buffer view encoded by meshoptimizer (EXT_meshopt_compression)");
+  add_compile_options(c.build_cmd, c.build);
 
-  Args r;
-  auto* render_cmd = app.add_subcommand("render", "draw a lit preview of a pattern's fabric (.png)");
-  add_pattern_options(render_cmd, r);
-  render_cmd->add_option("-o,--output", r.output, "the .png to write (- for standard output)")->required();
-  render_cmd->add_option("--size", r.size, "image size WxH of one view (default 960x720)");
+  c.render_cmd = app.add_subcommand("render", "draw a lit preview of a pattern's fabric (.png)");
+  add_pattern_options(c.render_cmd, c.render);
+  c.render_cmd->add_option("-o,--output", c.render.output, "the .png to write (- for standard output)")->required();
+  c.render_cmd->add_option("--size", c.render.size, "image size WxH of one view (default 960x720)");
   const std::map<std::string, knitc::render::RenderOptions::Side> sides{
       {"face", knitc::render::RenderOptions::Side::face},
       {"back", knitc::render::RenderOptions::Side::back},
       {"both", knitc::render::RenderOptions::Side::both}};
-  render_cmd->add_option("--side", r.render.side, "face (default), back, or both side by side")
+  c.render_cmd->add_option("--side", c.render.render.side, "face (default), back, or both side by side")
       ->transform(CLI::CheckedTransformer(sides, CLI::ignore_case));
-  add_compile_options(render_cmd, r);
+  add_compile_options(c.render_cmd, c.render);
 
-  Args n;
-  auto* snapshot_cmd = app.add_subcommand("snapshot", "print a stable summary of the compiled mesh, for snapshot tests");
-  add_pattern_options(snapshot_cmd, n);
-  snapshot_cmd->add_option("-o,--output", n.output, "write it to this file instead of standard output");
-  add_compile_options(snapshot_cmd, n);
+  c.snapshot_cmd = app.add_subcommand("snapshot", "print a stable summary of the compiled mesh, for snapshot tests");
+  add_pattern_options(c.snapshot_cmd, c.snapshot);
+  c.snapshot_cmd->add_option("-o,--output", c.snapshot.output, "write it to this file instead of standard output");
+  add_compile_options(c.snapshot_cmd, c.snapshot);
 
-  Args c;
-  auto* chart_cmd = app.add_subcommand("chart", "print the pattern's stitch chart as text");
-  add_pattern_options(chart_cmd, c);
+  c.chart_cmd = app.add_subcommand("chart", "print the pattern's stitch chart as text");
+  add_pattern_options(c.chart_cmd, c.chart);
 
-  Args k;
-  auto* check_cmd = app.add_subcommand("check", "validate a pattern only (fast; for editors and hooks)");
-  add_pattern_options(check_cmd, k);
+  c.check_cmd = app.add_subcommand("check", "validate a pattern only (fast; for editors and hooks)");
+  add_pattern_options(c.check_cmd, c.check);
 
-  Args bench_args;
-  std::string bench_size = "150x250";
-  bool bench_header = false;
-  auto* bench_cmd = app.add_subcommand("bench", "time the whole job on a jersey swatch of WxH loops (one table row)");
-  bench_cmd->add_option("--swatch", bench_size, "wales x courses, e.g. 150x250 (default)");
-  bench_cmd->add_flag("--header", bench_header, "print the table's header first");
-  add_compile_options(bench_cmd, bench_args);
+  c.bench_cmd = app.add_subcommand("bench", "time the whole job on a jersey swatch of WxH loops (one table row)");
+  c.bench_cmd->add_option("--swatch", c.bench_size, "wales x courses, e.g. 150x250 (default)");
+  c.bench_cmd->add_flag("--header", c.bench_header, "print the table's header first");
+  add_compile_options(c.bench_cmd, c.bench);
 
-  auto* reference_cmd = app.add_subcommand("reference", "print the pattern language reference (docs/language.md)");
+  c.reference_cmd = app.add_subcommand("reference", "print the pattern language reference (docs/language.md)");
+}
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return exit_usage;
-  }
-  // An output must not overwrite the pattern it comes from, nor another output: paths
-  // are compared as the files they name (DIR/../X.glb is X.glb, a link is its target).
-  for (const Args* args : {&b, &r, &n}) {
+// Outputs that would clobber the pattern or each other, or binary to a terminal: the
+// exit code, or 0. Paths are compared as the files they name (DIR/../X.glb is X.glb, a
+// link is its target).
+int refuse_bad_outputs(const Commands& c) {
+  for (const Args* args : {&c.build, &c.render, &c.snapshot}) {
     if (args->pattern.empty()) continue;
     const std::string pattern_file = knitc::writers::file_identity(args->pattern);
     std::vector<std::pair<std::string, std::string>> seen;  // identity, path
@@ -455,59 +450,90 @@ int run(int argc, char** argv) {
       seen.emplace_back(id, *output);
     }
   }
-  // Binary output to a terminal is never what was meant.
-  for (const Args* args : {&b, &r}) {
+  for (const Args* args : {&c.build, &c.render}) {
     if (args->output == "-" && ::isatty(STDOUT_FILENO) != 0) {
       report("knitc: -o - would write binary data to the terminal; redirect it (> file, | program) or name a file");
       return exit_usage;
     }
   }
-  // A larger instruction budget brings a longer deadline, unless one is given.
-  for (auto [cmd, args] : {std::pair{build_cmd, &b}, std::pair{render_cmd, &r}, std::pair{snapshot_cmd, &n},
-                           std::pair{chart_cmd, &c}, std::pair{check_cmd, &k}}) {
+  return 0;
+}
+
+// The defaults that follow other options: a larger instruction budget brings a longer
+// deadline unless one is given; --quality sets the density, --sides and --tolerance win.
+void settle_defaults(Commands& c) {
+  for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
+                           std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.chart_cmd, &c.chart},
+                           std::pair{c.check_cmd, &c.check}}) {
     if (!cmd->parsed() || cmd->get_option("--max-seconds")->count() != 0) continue;
     const knitc::runtime::Limits defaults;
     args->run.limits.seconds = defaults.seconds * std::max(1.0, static_cast<double>(args->run.limits.instructions) /
                                                                     static_cast<double>(defaults.instructions));
   }
-  // --quality sets the density; --sides and --tolerance, when given, win over it.
-  for (auto [cmd, args] : {std::pair{build_cmd, &b}, std::pair{render_cmd, &r}, std::pair{snapshot_cmd, &n},
-                           std::pair{bench_cmd, &bench_args}}) {
+  for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
+                           std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.bench_cmd, &c.bench}}) {
     if (!cmd->parsed() || !args->quality) continue;
     const knitc::Density d = knitc::density(*args->quality);
     if (cmd->get_option("--sides")->count() == 0) args->compile.sides = d.sides;
     if (cmd->get_option("--tolerance")->count() == 0) args->compile.chord_tolerance = d.chord_tolerance;
   }
-  if (build_cmd->parsed()) return build(b);
-  if (render_cmd->parsed()) {
-    const auto size = dimensions(r.size, 16, 8192);
+}
+
+int run_bench(const Commands& c) {
+  const auto size = dimensions(c.bench_size, 1, 100000);
+  if (!size) {
+    report("knitc: --swatch is \"" + c.bench_size + "\"; give WALESxCOURSES with each from 1 to 100000, e.g. 150x250");
+    return exit_usage;
+  }
+  try {
+    return knitc::cli::bench(size->first, size->second, c.bench.compile, c.bench_header);
+  } catch (const knitc::CompileError& e) {
+    report(e.what());
+    return exit_pattern;
+  } catch (const knitc::writers::OutputError& e) {
+    report(std::string("knitc: ") + e.what());
+    return exit_io;
+  }
+}
+
+int dispatch(Commands& c) {
+  if (c.build_cmd->parsed()) return build(c.build);
+  if (c.render_cmd->parsed()) {
+    const auto size = dimensions(c.render.size, 16, 8192);
     if (!size) {
-      report("knitc: --size is \"" + r.size + "\"; give WxH with each from 16 to 8192, e.g. 960x720");
+      report("knitc: --size is \"" + c.render.size + "\"; give WxH with each from 16 to 8192, e.g. 960x720");
       return exit_usage;
     }
-    r.render.width = size->first;
-    r.render.height = size->second;
-    return render(r);
+    c.render.render.width = size->first;
+    c.render.render.height = size->second;
+    return render(c.render);
   }
-  if (snapshot_cmd->parsed()) return snapshot(n);
-  if (bench_cmd->parsed()) {
-    const auto size = dimensions(bench_size, 1, 100000);
-    if (!size) {
-      report("knitc: --swatch is \"" + bench_size + "\"; give WALESxCOURSES with each from 1 to 100000, e.g. 150x250");
-      return exit_usage;
-    }
-    try {
-      return knitc::cli::bench(size->first, size->second, bench_args.compile, bench_header);
-    } catch (const knitc::CompileError& e) {
-      report(e.what());
-      return exit_pattern;
-    } catch (const knitc::writers::OutputError& e) {
-      report(std::string("knitc: ") + e.what());
-      return exit_io;
-    }
-  }
-  if (chart_cmd->parsed()) return chart(c);
-  if (check_cmd->parsed()) return check(k);
-  if (reference_cmd->parsed()) return write({knitc::writers::text_file("-", knitc::runtime::language_reference())});
+  if (c.snapshot_cmd->parsed()) return snapshot(c.snapshot);
+  if (c.bench_cmd->parsed()) return run_bench(c);
+  if (c.chart_cmd->parsed()) return chart(c.chart);
+  if (c.check_cmd->parsed()) return check(c.check);
+  if (c.reference_cmd->parsed()) return write({knitc::writers::text_file("-", knitc::runtime::language_reference())});
   return exit_usage;
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  Commands c;
+  declare_commands(c);
+  try {
+    c.app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return c.app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return c.app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return c.app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    c.app.exit(e);
+    return exit_usage;
+  }
+  if (const int code = refuse_bad_outputs(c); code != 0) return code;
+  settle_defaults(c);
+  return dispatch(c);
 }
