@@ -128,70 +128,73 @@ double Contacts::gap(const Chains& c, const Pair& p) const {
   return separation(c, p, push, s, t) - p.reach;
 }
 
-void Contacts::find(const Chains& c) {
-  built_at_ = c.pos;
-  // The sides of the pairs listed so far, to look up by (a, b, image).
-  std::vector<Pair> previous = std::move(pairs_);
-  std::sort(previous.begin(), previous.end(), key_before);
-  pairs_.clear();
-  const std::size_t n = c.pos.size();
-  double longest = 0.0;
-  glm::dvec2 lo(1e300), hi(-1e300);
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    if (!c.contactable[i]) continue;
-    longest = std::max(longest, glm::distance(c.pos[i], c.pos[i + 1]));
-    const glm::dvec3 m = midpoint(c, i);
-    lo = glm::min(lo, glm::dvec2(m));
-    hi = glm::max(hi, glm::dvec2(m));
-  }
-  if (lo.x > hi.x) {  // nothing takes part
-    strip_first_.assign(1, 0);
-    across_first_ = 0;
-    return;
-  }
-  const double cell = c.thickest + margin_ + longest;
-  auto cell_of = [&](const glm::dvec3& p) {
-    return glm::i64vec3(std::floor(p.x / cell), std::floor(p.y / cell), std::floor(p.z / cell));
-  };
-  // A column of cells per (x, y); a column's entries in order of their cell's z, then
-  // segment. The nine columns around a segment hold every candidate, each a short run.
+// A column of cells per (x, y); a column's entries in order of their cell's z, then
+// segment. The nine columns around a segment hold every candidate, each a short run.
+struct Contacts::Grid {
   struct Entry {
     std::uint64_t column;
     std::int64_t z;
     std::uint32_t segment;
     std::int8_t sx, sy;
   };
+  double cell = 0.0;
+  glm::dvec2 lo{1e300}, hi{-1e300};  // the box of the contactable segments' midpoints
   std::vector<Entry> entries;
-  entries.reserve(n);
+  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> columns;
+  bool empty() const { return lo.x > hi.x; }
+  glm::i64vec3 cell_of(const glm::dvec3& p) const {
+    return glm::i64vec3(std::floor(p.x / cell), std::floor(p.y / cell), std::floor(p.z / cell));
+  }
+};
+
+Contacts::Grid Contacts::grid_of(const Chains& c) const {
+  Grid g;
+  const std::size_t n = c.pos.size();
+  double longest = 0.0;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    if (!c.contactable[i]) continue;
+    longest = std::max(longest, glm::distance(c.pos[i], c.pos[i + 1]));
+    const glm::dvec3 m = midpoint(c, i);
+    g.lo = glm::min(g.lo, glm::dvec2(m));
+    g.hi = glm::max(g.hi, glm::dvec2(m));
+  }
+  if (g.empty()) return g;
+  g.cell = c.thickest + margin_ + longest;
+  g.entries.reserve(n);
   for (std::size_t i = 0; i + 1 < n; ++i) {
     if (!c.contactable[i]) continue;
     const glm::dvec3 m = midpoint(c, i);
     // Periodic: a segment near an edge also stands in for its image across the swatch.
     for (int sx = -1; sx <= 1; ++sx) {
-      if (sx != 0 && (period_.x == 0.0 || (sx > 0 ? m.x - lo.x : hi.x - m.x) > cell)) continue;
+      if (sx != 0 && (period_.x == 0.0 || (sx > 0 ? m.x - g.lo.x : g.hi.x - m.x) > g.cell)) continue;
       for (int sy = -1; sy <= 1; ++sy) {
-        if (sy != 0 && (period_.y == 0.0 || (sy > 0 ? m.y - lo.y : hi.y - m.y) > cell)) continue;
-        const auto k = cell_of(m + glm::dvec3(sx * period_.x, sy * period_.y, 0.0));
-        entries.push_back({cell_key(k.x, k.y, 0), k.z, static_cast<std::uint32_t>(i), static_cast<std::int8_t>(sx),
-                           static_cast<std::int8_t>(sy)});
+        if (sy != 0 && (period_.y == 0.0 || (sy > 0 ? m.y - g.lo.y : g.hi.y - m.y) > g.cell)) continue;
+        const auto k = g.cell_of(m + glm::dvec3(sx * period_.x, sy * period_.y, 0.0));
+        g.entries.push_back({cell_key(k.x, k.y, 0), k.z, static_cast<std::uint32_t>(i), static_cast<std::int8_t>(sx),
+                             static_cast<std::int8_t>(sy)});
       }
     }
   }
-  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+  std::sort(g.entries.begin(), g.entries.end(), [](const Grid::Entry& a, const Grid::Entry& b) {
     return a.column != b.column     ? a.column < b.column
            : a.z != b.z             ? a.z < b.z
            : a.segment != b.segment ? a.segment < b.segment
            : a.sx != b.sx           ? a.sx < b.sx
                                     : a.sy < b.sy;
   });
-  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> columns;
-  columns.reserve(entries.size() / 4 + 1);
-  for (std::size_t i = 0; i < entries.size();) {
+  g.columns.reserve(g.entries.size() / 4 + 1);
+  for (std::size_t i = 0; i < g.entries.size();) {
     std::size_t j = i;
-    while (j < entries.size() && entries[j].column == entries[i].column) ++j;
-    columns.emplace(entries[i].column, std::make_pair(i, j));
+    while (j < g.entries.size() && g.entries[j].column == g.entries[i].column) ++j;
+    g.columns.emplace(g.entries[i].column, std::make_pair(i, j));
     i = j;
   }
+  return g;
+}
+
+std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, const Grid& grid,
+                                                               const std::vector<Pair>& previous) const {
+  const std::size_t n = c.pos.size();
   // Each block of segments its own list, joined in order: the same list for any thread count.
   const std::size_t blocks = std::max<std::size_t>(1, std::min<std::size_t>(64, n / 4096));
   std::vector<std::vector<Pair>> found(blocks);
@@ -201,13 +204,13 @@ void Contacts::find(const Chains& c) {
       if (!c.contactable[a]) continue;
       const glm::dvec3 ma = midpoint(c, a);
       const double half_a = 0.5 * glm::distance(c.pos[a], c.pos[a + 1]);
-      const auto k = cell_of(ma);
+      const auto k = grid.cell_of(ma);
       for (int dx = -1; dx <= 1; ++dx)
         for (int dy = -1; dy <= 1; ++dy) {
-          const auto hit = columns.find(cell_key(k.x + dx, k.y + dy, 0));
-          if (hit == columns.end()) continue;
+          const auto hit = grid.columns.find(cell_key(k.x + dx, k.y + dy, 0));
+          if (hit == grid.columns.end()) continue;
           for (std::size_t e = hit->second.first; e < hit->second.second; ++e) {
-            const Entry& b = entries[e];
+            const Grid::Entry& b = grid.entries[e];
             if (b.z < k.z - 1) continue;
             if (b.z > k.z + 1) break;
             const std::size_t bs = b.segment;
@@ -232,11 +235,16 @@ void Contacts::find(const Chains& c) {
         }
     }
   });
-  // Strips one cell high across the courses; a pair belongs to its first segment's strip
-  // when its second is in the same or the next one, else to the few worked alone.
-  const auto strips = static_cast<std::size_t>(std::floor((hi.y - lo.y) / cell)) + 1;
+  return found;
+}
+
+// Strips one cell high across the courses; a pair belongs to its first segment's strip
+// when its second is in the same or the next one, else to the few worked alone.
+void Contacts::file_by_strips(const Chains& c, const Grid& grid, const std::vector<std::vector<Pair>>& found) {
+  const auto strips = static_cast<std::size_t>(std::floor((grid.hi.y - grid.lo.y) / grid.cell)) + 1;
   auto strip_of = [&](std::uint32_t segment) {
-    return std::min(strips - 1, static_cast<std::size_t>(std::max(0.0, std::floor((midpoint(c, segment).y - lo.y) / cell))));
+    return std::min(strips - 1,
+                    static_cast<std::size_t>(std::max(0.0, std::floor((midpoint(c, segment).y - grid.lo.y) / grid.cell))));
   };
   std::vector<std::size_t> count(strips + 1, 0);
   std::size_t total = 0;
@@ -259,6 +267,21 @@ void Contacts::find(const Chains& c) {
   std::size_t i = 0;
   for (const auto& list : found)
     for (const Pair& p : list) pairs_[next[strip_of_pair[i++]]++] = p;
+}
+
+void Contacts::find(const Chains& c) {
+  built_at_ = c.pos;
+  // The sides of the pairs listed so far, to look up by (a, b, image).
+  std::vector<Pair> previous = std::move(pairs_);
+  std::sort(previous.begin(), previous.end(), key_before);
+  pairs_.clear();
+  const Grid grid = grid_of(c);
+  if (grid.empty()) {  // nothing takes part
+    strip_first_.assign(1, 0);
+    across_first_ = 0;
+    return;
+  }
+  file_by_strips(c, grid, close_pairs(c, grid, previous));
   by_segments_.resize(pairs_.size());
   for (std::size_t k = 0; k < pairs_.size(); ++k) by_segments_[k] = static_cast<std::uint32_t>(k);
   std::sort(by_segments_.begin(), by_segments_.end(), [&](std::uint32_t x, std::uint32_t y) { return key_before(pairs_[x], pairs_[y]); });

@@ -81,6 +81,12 @@ class Contacts {
   std::int8_t neighbours_side(const Pair& p) const;  // the side of a listed pair a segment away, or 0
   std::int8_t side_of(const Chains& c, const Pair& p) const;
   glm::dvec3 shift(const Pair& p) const { return {p.sx * period_.x, p.sy * period_.y, 0.0}; }
+  // find()'s passes: the segments in a grid of columns, the close pairs found in it
+  // (one list per block of segments), the pairs filed by strips.
+  struct Grid;
+  Grid grid_of(const Chains& c) const;
+  std::vector<std::vector<Pair>> close_pairs(const Chains& c, const Grid& grid, const std::vector<Pair>& previous) const;
+  void file_by_strips(const Chains& c, const Grid& grid, const std::vector<std::vector<Pair>>& found);
   double gap(const Chains& c, const Pair& p) const;
 
   glm::dvec2 period_;

@@ -187,8 +187,83 @@ bool is_fence(std::string_view line) { return line.substr(0, 3) == "```" || line
 
 }  // namespace
 
-std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, std::span<const std::string> yarn_ids) {
-  Knitspeak out;
+namespace {
+
+// Reading a block line by line: numbered rows are gathered and worked in number order,
+// repeats and unnumbered rows where they stand. Each step returns false on an error
+// (kept in `error`).
+class Reader {
+ public:
+  explicit Reader(std::span<const std::string> yarn_ids) : yarn_ids_(yarn_ids) {}
+
+  // "Row 1 (RS): ...", "Rows 5-8: Repeat rows 1-4."
+  bool label(int line, const Label& l) {
+    std::string problem;
+    const auto again = repeated_rows(l.body, problem);
+    if (!problem.empty()) return fail(line, problem);
+    std::optional<int> count;
+    const std::string text = again ? std::string() : without_count(l.body, count);
+    if (!again && text.empty()) return fail(line, "row " + std::to_string(l.rows.front()) + " has no stitches after its label");
+    if (again && again->size() != l.rows.size())
+      return fail(line, std::to_string(l.rows.size()) + " rows repeat " + std::to_string(again->size()) +
+                            "; give as many rows as they repeat (Rows 5-8: Repeat rows 1-4)");
+    for (std::size_t i = 0; i < l.rows.size(); ++i) {
+      const int n = l.rows[i];
+      if (given_.count(n) || emitted_.count(n)) return fail(line, "row " + std::to_string(n) + " is given twice");
+      given_[n] = Given{line, text, l.side, count, again ? std::optional<int>((*again)[i]) : std::nullopt};
+    }
+    return true;
+  }
+
+  // "Repeat rows 3-6." where it stands: those rows once more.
+  bool repeat(int line, const std::vector<int>& rows) {
+    if (!flush()) return false;
+    for (int n : rows) {
+      const auto it = emitted_.find(n);
+      if (it == emitted_.end()) return fail(line, "repeats row " + std::to_string(n) + ", which has not been given before this line");
+      if (!room(line, out_.rows[it->second].text.size())) return false;
+      KnitspeakRow r = out_.rows[it->second];
+      r.line = line;
+      r.repeat = true;
+      out_.rows.push_back(std::move(r));
+    }
+    return true;
+  }
+
+  // An unnumbered line: a row if it parses as one (no hint needed: only asking), else
+  // skipped with a warning.
+  bool unnumbered(int line, std::string_view text_line) {
+    std::optional<int> count;
+    const std::string text = without_count(std::string(text_line), count);
+    if (text.empty() || parse_row(text, yarn_ids_, false).index() != 0) {
+      out_.skipped.push_back({line, "not a row, skipped: " + quote_row(text_line)});
+      return true;
+    }
+    if (!flush() || !room(line, text.size())) return false;
+    KnitspeakRow r;
+    r.line = line;
+    r.text = text;
+    r.stitches_after = count;
+    out_.rows.push_back(std::move(r));
+    return true;
+  }
+
+  bool fail(int line, std::string message) {
+    error_ = KnitspeakNote{line, std::move(message)};
+    return false;
+  }
+
+  std::variant<Knitspeak, KnitspeakNote> finish() {
+    if (error_ || !flush()) return *error_;
+    if (!given_.empty()) {
+      const auto& [n, g] = *given_.begin();
+      return KnitspeakNote{g.line, "row " + std::to_string(n) + " is given but row " + std::to_string(next_number_) +
+                                       " never is; number the rows without a gap"};
+    }
+    return std::move(out_);
+  }
+
+ private:
   struct Given {
     int line;
     std::string text;
@@ -196,146 +271,89 @@ std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, st
     std::optional<int> count;
     std::optional<int> same_as;  // "Rows 5-8: Repeat rows 1-4": row 5 is row 1
   };
-  std::map<int, Given> given;  // by number: rows are worked in number order
-  std::map<int, std::size_t> emitted;  // number -> index in out.rows
-  int next_number = 0;                 // the next numbered row to work; 0 until the first
-  std::optional<KnitspeakNote> error;
 
   // The rows a block may expand to, and the bytes of their texts: a few lines of
   // "Repeat rows 1-99999." must not fill memory before a single row is worked.
-  std::size_t text_bytes = 0;
-  auto room = [&](int line, std::size_t bytes) {
-    text_bytes += bytes;
-    if (out.rows.size() >= max_block_rows) {
-      error = KnitspeakNote{line, "the text comes to more than " + std::to_string(max_block_rows) + " rows"};
-      return false;
-    }
-    if (text_bytes > max_block_text_bytes) {
-      error = KnitspeakNote{line, "the text's rows come to more than " + std::to_string(max_block_text_bytes >> 20) +
-                                      " MiB of instructions"};
-      return false;
-    }
+  bool room(int line, std::size_t bytes) {
+    text_bytes_ += bytes;
+    if (out_.rows.size() >= max_block_rows)
+      return fail(line, "the text comes to more than " + std::to_string(max_block_rows) + " rows");
+    if (text_bytes_ > max_block_text_bytes)
+      return fail(line, "the text's rows come to more than " + std::to_string(max_block_text_bytes >> 20) + " MiB of instructions");
     return true;
-  };
-  auto emit = [&](int number, const Given& g) {
-    if (!room(g.line, g.text.size())) return;
+  }
+
+  bool emit(int number, const Given& g) {
+    if (!room(g.line, g.text.size())) return false;
     KnitspeakRow r;
     r.line = g.line;
     r.number = number;
     r.side = g.side;
     r.stitches_after = g.count;
     if (g.same_as) {
-      const auto it = emitted.find(*g.same_as);
-      if (it == emitted.end()) {
-        error = KnitspeakNote{g.line, "row " + std::to_string(number) + " repeats row " + std::to_string(*g.same_as) +
-                                          ", which comes later or not at all; repeat rows already worked"};
-        return;
-      }
-      const KnitspeakRow& source = out.rows[it->second];
+      const auto it = emitted_.find(*g.same_as);
+      if (it == emitted_.end())
+        return fail(g.line, "row " + std::to_string(number) + " repeats row " + std::to_string(*g.same_as) +
+                                ", which comes later or not at all; repeat rows already worked");
+      const KnitspeakRow& source = out_.rows[it->second];
       r.text = source.text;
       if (!r.side && source.side) r.side = source.side;
       if (!r.stitches_after) r.stitches_after = source.stitches_after;
     } else {
       r.text = g.text;
     }
-    emitted[number] = out.rows.size();
-    out.rows.push_back(std::move(r));
-  };
-  // Works the numbered rows given so far, in order, from the next one on.
-  auto flush = [&] {
-    if (next_number == 0 && !given.empty()) next_number = given.begin()->first;
-    for (auto it = given.find(next_number); it != given.end() && !error; it = given.find(next_number)) {
-      emit(next_number, it->second);
-      given.erase(it);
-      ++next_number;
-    }
-  };
+    emitted_[number] = out_.rows.size();
+    out_.rows.push_back(std::move(r));
+    return true;
+  }
 
+  // Works the numbered rows given so far, in order, from the next one on.
+  bool flush() {
+    if (next_number_ == 0 && !given_.empty()) next_number_ = given_.begin()->first;
+    for (auto it = given_.find(next_number_); it != given_.end(); it = given_.find(next_number_)) {
+      if (!emit(next_number_, it->second)) return false;
+      given_.erase(it);
+      ++next_number_;
+    }
+    return true;
+  }
+
+  std::span<const std::string> yarn_ids_;
+  Knitspeak out_;
+  std::map<int, Given> given_;          // by number: rows are worked in number order
+  std::map<int, std::size_t> emitted_;  // number -> index in out_.rows
+  int next_number_ = 0;                 // the next numbered row to work; 0 until the first
+  std::size_t text_bytes_ = 0;
+  std::optional<KnitspeakNote> error_;
+};
+
+}  // namespace
+
+std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, std::span<const std::string> yarn_ids) {
+  Reader reader(yarn_ids);
   int line_number = 0;
-  for (std::size_t start = 0; start <= block.size() && !error; ++line_number) {
+  for (std::size_t start = 0; start <= block.size(); ++line_number) {
     const std::size_t end = std::min(block.find('\n', start), block.size());
     const std::string_view raw = block.substr(start, end - start);
     start = end + 1;
-    std::string_view line = without_bullet(trim(raw));
+    const std::string_view line = without_bullet(trim(raw));
     if (line.empty() || is_fence(line)) continue;
-
     std::string problem;  // a row list that cannot be honoured
-    const auto l = label(line, problem);
-    if (!problem.empty()) {
-      error = KnitspeakNote{line_number, problem};
-      break;
+    bool ok = true;
+    if (const auto l = label(line, problem)) {
+      ok = reader.label(line_number, *l);
+    } else if (!problem.empty()) {
+      ok = reader.fail(line_number, problem);
+    } else if (const auto again = repeated_rows(line, problem)) {
+      ok = reader.repeat(line_number, *again);
+    } else if (!problem.empty()) {
+      ok = reader.fail(line_number, problem);
+    } else {
+      ok = reader.unnumbered(line_number, line);
     }
-    if (l) {
-      const auto again = repeated_rows(l->body, problem);
-      if (!problem.empty()) {
-        error = KnitspeakNote{line_number, problem};
-        break;
-      }
-      std::optional<int> count;
-      const std::string text = again ? std::string() : without_count(l->body, count);
-      if (!again && text.empty()) {
-        error = KnitspeakNote{line_number, "row " + std::to_string(l->rows.front()) + " has no stitches after its label"};
-        break;
-      }
-      if (again && again->size() != l->rows.size()) {
-        error = KnitspeakNote{line_number, std::to_string(l->rows.size()) + " rows repeat " + std::to_string(again->size()) +
-                                               "; give as many rows as they repeat (Rows 5-8: Repeat rows 1-4)"};
-        break;
-      }
-      for (std::size_t i = 0; i < l->rows.size(); ++i) {
-        const int n = l->rows[i];
-        if (given.count(n) || emitted.count(n)) {
-          error = KnitspeakNote{line_number, "row " + std::to_string(n) + " is given twice"};
-          break;
-        }
-        given[n] = Given{line_number, text, l->side, count, again ? std::optional<int>((*again)[i]) : std::nullopt};
-      }
-      continue;
-    }
-    const auto again = repeated_rows(line, problem);
-    if (!problem.empty()) {
-      error = KnitspeakNote{line_number, problem};
-      break;
-    }
-    if (again) {  // "Repeat rows 3-6." where it stands
-      flush();
-      for (int n : *again) {
-        const auto it = emitted.find(n);
-        if (it == emitted.end()) {
-          error = KnitspeakNote{line_number, "repeats row " + std::to_string(n) + ", which has not been given before this line"};
-          break;
-        }
-        if (!room(line_number, out.rows[it->second].text.size())) break;
-        KnitspeakRow r = out.rows[it->second];
-        r.line = line_number;
-        r.repeat = true;
-        out.rows.push_back(std::move(r));
-      }
-      continue;
-    }
-    std::optional<int> count;
-    const std::string text = without_count(std::string(line), count);
-    if (!text.empty() && parse_row(text, yarn_ids, false).index() == 0) {  // an unnumbered row
-      flush();
-      if (!room(line_number, text.size())) break;
-      KnitspeakRow r;
-      r.line = line_number;
-      r.text = text;
-      r.stitches_after = count;
-      out.rows.push_back(std::move(r));
-      continue;
-    }
-    out.skipped.push_back({line_number, "not a row, skipped: " + quote_row(line)});
+    if (!ok) break;
   }
-  if (error) return *error;
-  flush();
-  if (error) return *error;
-  if (!given.empty()) {
-    const auto& [n, g] = *given.begin();
-    return KnitspeakNote{g.line, "row " + std::to_string(n) + " is given but row " + std::to_string(next_number) +
-                                     " never is; number the rows without a gap"};
-  }
-  return out;
+  return reader.finish();
 }
 
 }  // namespace knitc::language
