@@ -1,5 +1,8 @@
 // The pattern verbs after pattern{}: each binding checks its arguments and adds courses.
 // The verb table at the end declares them for the bindings and the reference docs.
+// One idea over 400 lines: every binding is the same few steps (read the Lua arguments,
+// locate, hand the work to language::Work), and the table that declares them must sit
+// beside them; the knitting itself is in language/work.cpp.
 #include <algorithm>
 
 #include "language/knitspeak.hpp"

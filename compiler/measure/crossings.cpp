@@ -1,5 +1,7 @@
 #include "measure/crossings.hpp"
 
+#include "spatial/columns.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -18,10 +20,6 @@ struct Segment {
   std::uint32_t piece, index;
 };
 
-std::uint64_t cell_key(std::int64_t x, std::int64_t y) {
-  return static_cast<std::uint64_t>(x + (1ll << 31)) << 32 | static_cast<std::uint64_t>(y + (1ll << 31));
-}
-
 auto order(const Crossing& c) { return std::tie(c.piece_a, c.piece_b, c.segment_a, c.segment_b); }
 
 }  // namespace
@@ -38,22 +36,26 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
   }
   std::vector<Crossing> out;
   if (segments.empty() || longest <= 0.0) return out;
-  // Each segment in the cells its box covers (at most four: a cell is as long as the longest).
+  // Each segment in the columns its box covers, seen from the face (at most four: a cell
+  // is as long as the longest); the pairs that share a column are the candidates.
   const double cell = longest;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
+  spatial::Columns grid(cell);
   grid.reserve(segments.size());
   for (std::size_t s = 0; s < segments.size(); ++s) {
     const glm::dvec2 lo = glm::min(glm::dvec2(segments[s].p), glm::dvec2(segments[s].q)) / cell;
     const glm::dvec2 hi = glm::max(glm::dvec2(segments[s].p), glm::dvec2(segments[s].q)) / cell;
     for (auto x = static_cast<std::int64_t>(std::floor(lo.x)); x <= static_cast<std::int64_t>(std::floor(hi.x)); ++x)
       for (auto y = static_cast<std::int64_t>(std::floor(lo.y)); y <= static_cast<std::int64_t>(std::floor(hi.y)); ++y)
-        grid[cell_key(x, y)].push_back(static_cast<std::uint32_t>(s));
+        grid.add({x, y, 0}, static_cast<std::uint32_t>(s));
   }
+  grid.index();
   std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates;
-  for (const auto& [key, list] : grid)
+  grid.each_column([&](std::span<const spatial::Columns::Entry> list) {
     for (std::size_t i = 0; i < list.size(); ++i)
-      for (std::size_t j = i + 1; j < list.size(); ++j) candidates.emplace_back(std::min(list[i], list[j]), std::max(list[i], list[j]));
-  std::sort(candidates.begin(), candidates.end());  // the map's order is not ours: sort, then drop repeats
+      for (std::size_t j = i + 1; j < list.size(); ++j)
+        candidates.emplace_back(std::min(list[i].item, list[j].item), std::max(list[i].item, list[j].item));
+  });
+  std::sort(candidates.begin(), candidates.end());  // a pair may share several columns: sort, then drop repeats
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   for (const auto& [i, j] : candidates) {
     const Segment &a = segments[i], &b = segments[j];

@@ -1,5 +1,7 @@
 #include "measure/measure.hpp"
 
+#include "spatial/columns.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -43,51 +45,24 @@ std::vector<Point> centreline_points(const Pattern& pattern, std::span<const cur
   return points;
 }
 
-std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
-  // 21 bits a coordinate: fabrics are far smaller than 2^20 cells across.
-  auto bits = [](std::int64_t v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1fffffu; };
-  return bits(x) << 42 | bits(y) << 21 | bits(z);
-}
-
 // Cells one diameter (`cell`, the thickest yarn's) wide; overlaps per that diameter.
 double deepest_penetration(const std::vector<Point>& points, double cell) {
   if (points.empty()) return 0.0;
-  auto cell_of = [&](const glm::dvec3& p) {
-    return glm::i64vec3(std::floor(p.x / cell), std::floor(p.y / cell), std::floor(p.z / cell));
-  };
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto c = cell_of(points[i].at);
-    keyed[i] = {cell_key(c.x, c.y, c.z), static_cast<std::uint32_t>(i)};
-  }
-  std::sort(keyed.begin(), keyed.end());
-  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> cells;
-  cells.reserve(keyed.size() / 4 + 1);
-  for (std::size_t i = 0; i < keyed.size();) {
-    std::size_t j = i;
-    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
-    cells.emplace(keyed[i].first, std::make_pair(i, j));
-    i = j;
-  }
+  spatial::Columns grid(cell);
+  grid.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) grid.add(grid.cell_of(points[i].at), static_cast<std::uint32_t>(i));
+  grid.index();
   double deepest = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point& a = points[i];
-    const auto c = cell_of(a.at);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto found = cells.find(cell_key(c.x + dx, c.y + dy, c.z + dz));
-          if (found == cells.end()) continue;
-          for (std::size_t k = found->second.first; k < found->second.second; ++k) {
-            const std::uint32_t j = keyed[k].second;
-            if (j <= i) continue;
-            const Point& b = points[j];
-            const double reach = a.radius + b.radius;
-            if (a.piece == b.piece && std::abs(a.along - b.along) <= 2.0 * reach) continue;
-            const double gap = glm::distance(a.at, b.at);
-            if (gap < reach) deepest = std::max(deepest, (reach - gap) / cell);
-          }
-        }
+    grid.near(grid.cell_of(a.at), [&](const spatial::Columns::Entry& e) {
+      if (e.item <= i) return;
+      const Point& b = points[e.item];
+      const double reach = a.radius + b.radius;
+      if (a.piece == b.piece && std::abs(a.along - b.along) <= 2.0 * reach) return;
+      const double gap = glm::distance(a.at, b.at);
+      if (gap < reach) deepest = std::max(deepest, (reach - gap) / cell);
+    });
   }
   return deepest;
 }

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "parallel.hpp"
+#include "spatial/columns.hpp"
 
 namespace knitc::relax {
 
@@ -44,11 +45,6 @@ void closest_points(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3
 }
 
 namespace {
-
-std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
-  auto bits = [](std::int64_t v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1fffffu; };
-  return bits(x) << 42 | bits(y) << 21 | bits(z);
-}
 
 glm::dvec3 midpoint(const Chains& c, std::size_t i) { return 0.5 * (c.pos[i] + c.pos[i + 1]); }
 double along_mid(const Chains& c, std::size_t i) { return c.along[i] + 0.5 * c.rest_length[i]; }
@@ -128,23 +124,12 @@ double Contacts::gap(const Chains& c, const Pair& p) const {
   return separation(c, p, push, s, t) - p.reach;
 }
 
-// A column of cells per (x, y); a column's entries in order of their cell's z, then
-// segment. The nine columns around a segment hold every candidate, each a short run.
+// The contactable segments' midpoints in the grid of columns (spatial/columns.hpp), their
+// periodic images too.
 struct Contacts::Grid {
-  struct Entry {
-    std::uint64_t column;
-    std::int64_t z;
-    std::uint32_t segment;
-    std::int8_t sx, sy;
-  };
-  double cell = 0.0;
+  spatial::Columns columns{1.0};
   glm::dvec2 lo{1e300}, hi{-1e300};  // the box of the contactable segments' midpoints
-  std::vector<Entry> entries;
-  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> columns;
   bool empty() const { return lo.x > hi.x; }
-  glm::i64vec3 cell_of(const glm::dvec3& p) const {
-    return glm::i64vec3(std::floor(p.x / cell), std::floor(p.y / cell), std::floor(p.z / cell));
-  }
 };
 
 Contacts::Grid Contacts::grid_of(const Chains& c) const {
@@ -159,36 +144,23 @@ Contacts::Grid Contacts::grid_of(const Chains& c) const {
     g.hi = glm::max(g.hi, glm::dvec2(m));
   }
   if (g.empty()) return g;
-  g.cell = c.thickest + margin_ + longest;
-  g.entries.reserve(n);
+  const double cell = c.thickest + margin_ + longest;
+  g.columns = spatial::Columns(cell);
+  g.columns.reserve(n);
   for (std::size_t i = 0; i + 1 < n; ++i) {
     if (!c.contactable[i]) continue;
     const glm::dvec3 m = midpoint(c, i);
     // Periodic: a segment near an edge also stands in for its image across the swatch.
     for (int sx = -1; sx <= 1; ++sx) {
-      if (sx != 0 && (period_.x == 0.0 || (sx > 0 ? m.x - g.lo.x : g.hi.x - m.x) > g.cell)) continue;
+      if (sx != 0 && (period_.x == 0.0 || (sx > 0 ? m.x - g.lo.x : g.hi.x - m.x) > cell)) continue;
       for (int sy = -1; sy <= 1; ++sy) {
-        if (sy != 0 && (period_.y == 0.0 || (sy > 0 ? m.y - g.lo.y : g.hi.y - m.y) > g.cell)) continue;
-        const auto k = g.cell_of(m + glm::dvec3(sx * period_.x, sy * period_.y, 0.0));
-        g.entries.push_back({cell_key(k.x, k.y, 0), k.z, static_cast<std::uint32_t>(i), static_cast<std::int8_t>(sx),
-                             static_cast<std::int8_t>(sy)});
+        if (sy != 0 && (period_.y == 0.0 || (sy > 0 ? m.y - g.lo.y : g.hi.y - m.y) > cell)) continue;
+        g.columns.add(g.columns.cell_of(m + glm::dvec3(sx * period_.x, sy * period_.y, 0.0)), static_cast<std::uint32_t>(i),
+                      static_cast<std::int8_t>(sx), static_cast<std::int8_t>(sy));
       }
     }
   }
-  std::sort(g.entries.begin(), g.entries.end(), [](const Grid::Entry& a, const Grid::Entry& b) {
-    return a.column != b.column     ? a.column < b.column
-           : a.z != b.z             ? a.z < b.z
-           : a.segment != b.segment ? a.segment < b.segment
-           : a.sx != b.sx           ? a.sx < b.sx
-                                    : a.sy < b.sy;
-  });
-  g.columns.reserve(g.entries.size() / 4 + 1);
-  for (std::size_t i = 0; i < g.entries.size();) {
-    std::size_t j = i;
-    while (j < g.entries.size() && g.entries[j].column == g.entries[i].column) ++j;
-    g.columns.emplace(g.entries[i].column, std::make_pair(i, j));
-    i = j;
-  }
+  g.columns.index();
   return g;
 }
 
@@ -204,35 +176,26 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
       if (!c.contactable[a]) continue;
       const glm::dvec3 ma = midpoint(c, a);
       const double half_a = 0.5 * glm::distance(c.pos[a], c.pos[a + 1]);
-      const auto k = grid.cell_of(ma);
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy) {
-          const auto hit = grid.columns.find(cell_key(k.x + dx, k.y + dy, 0));
-          if (hit == grid.columns.end()) continue;
-          for (std::size_t e = hit->second.first; e < hit->second.second; ++e) {
-            const Grid::Entry& b = grid.entries[e];
-            if (b.z < k.z - 1) continue;
-            if (b.z > k.z + 1) break;
-            const std::size_t bs = b.segment;
-            if (bs <= a) continue;
+      grid.columns.near(grid.columns.cell_of(ma), [&](const spatial::Columns::Entry& b) {
+            const std::size_t bs = b.item;
+            if (bs <= a) return;
             if (b.sx == 0 && b.sy == 0 && c.piece[a] == c.piece[bs] &&
                 std::abs(along_mid(c, a) - along_mid(c, bs)) <= 1.8 * (c.radius[a] + c.radius[bs]))
-              continue;
+              return;
             const glm::dvec3 offset(b.sx * period_.x, b.sy * period_.y, 0.0);
             const glm::dvec3 between = ma - midpoint(c, bs) - offset;
             const double bound = c.radius[a] + c.radius[bs] + margin_ + half_a + 0.5 * glm::distance(c.pos[bs], c.pos[bs + 1]);
-            if (glm::dot(between, between) > bound * bound) continue;
+            if (glm::dot(between, between) > bound * bound) return;
             const auto held = static_cast<std::uint8_t>((c.inv_mass[a] == 0.0 ? 1 : 0) | (c.inv_mass[a + 1] == 0.0 ? 2 : 0) |
                                                         (c.inv_mass[bs] == 0.0 ? 4 : 0) | (c.inv_mass[bs + 1] == 0.0 ? 8 : 0));
-            Pair pair{static_cast<std::uint32_t>(a), b.segment, b.sx, b.sy, held, 0, static_cast<float>(c.radius[a] + c.radius[bs])};
+            Pair pair{static_cast<std::uint32_t>(a), b.item, b.sx, b.sy, held, 0, static_cast<float>(c.radius[a] + c.radius[bs])};
             const auto known = std::lower_bound(previous.begin(), previous.end(), pair, key_before);
             if (known != previous.end() && !key_before(pair, *known) && known->side != 0)
               pair.side = known->side;
             else
               pair.side = side_of(c, pair);
             if (gap(c, pair) < margin_) found[block].push_back(pair);
-          }
-        }
+      });
     }
   });
   return found;
@@ -241,10 +204,11 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
 // Strips one cell high across the courses; a pair belongs to its first segment's strip
 // when its second is in the same or the next one, else to the few worked alone.
 void Contacts::file_by_strips(const Chains& c, const Grid& grid, const std::vector<std::vector<Pair>>& found) {
-  const auto strips = static_cast<std::size_t>(std::floor((grid.hi.y - grid.lo.y) / grid.cell)) + 1;
+  const double cell = grid.columns.cell();
+  const auto strips = static_cast<std::size_t>(std::floor((grid.hi.y - grid.lo.y) / cell)) + 1;
   auto strip_of = [&](std::uint32_t segment) {
     return std::min(strips - 1,
-                    static_cast<std::size_t>(std::max(0.0, std::floor((midpoint(c, segment).y - grid.lo.y) / grid.cell))));
+                    static_cast<std::size_t>(std::max(0.0, std::floor((midpoint(c, segment).y - grid.lo.y) / cell))));
   };
   std::vector<std::size_t> count(strips + 1, 0);
   std::size_t total = 0;

@@ -1,3 +1,7 @@
+// Written instructions parsed: tokens, then a recursive-descent parser of sequences,
+// groups, repeats and stitches with their counts and yarns. One idea over 400 lines: the
+// grammar of a written row, whose productions call each other; working a parsed row
+// across the live stitches is worked.cpp.
 #include "language/written.hpp"
 
 #include <algorithm>
