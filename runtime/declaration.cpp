@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "fields.hpp"
 #include "script.hpp"
 
 namespace knitc::runtime {
@@ -58,10 +59,12 @@ std::string weight_names() {
   return out;
 }
 
-double in_range(lua_State* L, double v, const std::string& what, double lo, double hi, const char* unit) {
-  if (std::isnan(v) || v <= lo || v > hi)
+// A number field's value, in its declared range (fields.cpp).
+double in_range(lua_State* L, double v, const std::string& what, const Field& f) {
+  const std::string unit(f.unit);
+  if (std::isnan(v) || v <= f.lo || v > f.hi)
     fail(L, what + " is " + (std::isnan(v) ? std::string("NaN") : show(v) + unit) + "; it must be more than " +
-                show(lo) + unit + " and at most " + show(hi) + unit);
+                show(f.lo) + unit + " and at most " + show(f.hi) + unit);
   return v;
 }
 
@@ -80,24 +83,27 @@ bool is_identifier(const std::string& s) {
 
 // section = "circle" | "ellipse" (aspect) | "plied" (plies, twist, direction)
 void read_section(lua_State* L, int t, const std::string& name, Yarn& y) {
-  const std::string section = string_field(L, t, name, "section").value_or("circle");
+  const std::string section = string_field(L, t, name, "section").value_or(std::string(field("yarn", "section").fallback));
   const auto aspect = number_field(L, t, name, "aspect");
   const auto twist = number_field(L, t, name, "twist");
   const auto direction = string_field(L, t, name, "direction");
   lua_getfield(L, t, "plies");
   const bool has_plies = !lua_isnil(L, -1);
-  if (has_plies) y.plies = static_cast<int>(whole_number(L, lua_gettop(L), name + ".plies", 2, 6));
+  const Field& plies = field("yarn", "plies");
+  if (has_plies)
+    y.plies = static_cast<int>(whole_number(L, lua_gettop(L), name + ".plies", static_cast<long long>(plies.lo),
+                                            static_cast<long long>(plies.hi)));
   lua_pop(L, 1);
   if (section == "circle") {
     y.section = Section::circle;
   } else if (section == "ellipse") {
     y.section = Section::ellipse;
-    y.aspect = aspect ? in_range(L, *aspect, name + ".aspect", 0.1, 1.0, "") : 0.7;
+    y.aspect = aspect ? in_range(L, *aspect, name + ".aspect", field("yarn", "aspect")) : field("yarn", "aspect").value;
   } else if (section == "plied") {
     y.section = Section::plied;
-    if (!has_plies) y.plies = 2;
-    y.twist = twist ? in_range(L, *twist, name + ".twist", 0.0, 200.0, " turns per 10 cm") : 15.0;
-    const std::string d = direction.value_or("S");
+    if (!has_plies) y.plies = static_cast<int>(plies.value);
+    y.twist = twist ? in_range(L, *twist, name + ".twist", field("yarn", "twist")) : field("yarn", "twist").value;
+    const std::string d = direction.value_or(std::string(field("yarn", "direction").fallback));
     if (d != "S" && d != "Z" && d != "s" && d != "z") fail(L, name + ".direction is \"" + d + "\"; give \"S\" or \"Z\"");
     y.z_twist = d == "Z" || d == "z";
   } else {
@@ -120,7 +126,7 @@ void read_yarns(lua_State* L, int index, Pattern& p) {
     if (!lua_istable(L, -1)) fail(L, "yarns." + id + " must be a table such as { diameter = 1.0, color = \"#d9c8a9\" }");
     const int t = lua_gettop(L);
     const std::string name = "yarns." + id;
-    only_known_keys(L, t, name, {"diameter", "weight", "color", "section", "aspect", "plies", "twist", "direction"});
+    only_known_keys(L, t, name, "yarn");
     Yarn y;
     y.id = id;
     const auto d = number_field(L, t, name, "diameter");
@@ -131,11 +137,11 @@ void read_yarns(lua_State* L, int index, Pattern& p) {
       if (!wd) fail(L, name + ".weight is \"" + *weight + "\"; known weights: " + weight_names());
       y.diameter = *wd;
     } else if (d) {
-      y.diameter = in_range(L, *d, name + ".diameter", 0.0, 30.0, " mm");
+      y.diameter = in_range(L, *d, name + ".diameter", field("yarn", "diameter"));
     } else {
       fail(L, name + " needs a diameter in mm or a weight, e.g. diameter = 1.0 or weight = \"dk\"");
     }
-    const std::string color = string_field(L, t, name, "color").value_or("#d9c8a9");
+    const std::string color = string_field(L, t, name, "color").value_or(std::string(field("yarn", "color").fallback));
     const auto hex = normal_hex_color(color);
     if (!hex) fail(L, name + ".color is \"" + color + "\"; give a CSS hex colour such as \"#d9c8a9\"");
     y.color = *hex;
@@ -152,7 +158,7 @@ void read_gauge(lua_State* L, int index, Pattern& p) {
   if (!lua_istable(L, -1))
     fail(L, "pattern{} needs a gauge, e.g. gauge = { stitches = 22, rows = 30 } (per 10 cm)");
   const int g = lua_gettop(L);
-  only_known_keys(L, g, "gauge", {"stitches", "rows", "loop_width", "loop_height", "thickness"});
+  only_known_keys(L, g, "gauge", "gauge");
   const auto stitches = number_field(L, g, "gauge", "stitches");
   const auto rows = number_field(L, g, "gauge", "rows");
   const auto width = number_field(L, g, "gauge", "loop_width");
@@ -162,13 +168,13 @@ void read_gauge(lua_State* L, int index, Pattern& p) {
   if (per_10cm && in_mm) fail(L, "gauge mixes stitches/rows with loop_width/loop_height; give one pair or the other");
   if (per_10cm) {
     if (!stitches || !rows) fail(L, "gauge needs both stitches and rows (per 10 cm)");
-    p.gauge.loop_width = 100.0 / in_range(L, *stitches, "gauge.stitches", 0.0, 200.0, " per 10 cm");
-    const double spacing = 100.0 / in_range(L, *rows, "gauge.rows", 0.0, 300.0, " per 10 cm");
+    p.gauge.loop_width = 100.0 / in_range(L, *stitches, "gauge.stitches", field("gauge", "stitches"));
+    const double spacing = 100.0 / in_range(L, *rows, "gauge.rows", field("gauge", "rows"));
     p.gauge.loop_height = spacing / Gauge::course_spacing_ratio;
   } else if (in_mm) {
     if (!width || !height) fail(L, "gauge needs both loop_width and loop_height (mm)");
-    p.gauge.loop_width = in_range(L, *width, "gauge.loop_width", 0.0, 100.0, " mm");
-    p.gauge.loop_height = in_range(L, *height, "gauge.loop_height", 0.0, 100.0, " mm");
+    p.gauge.loop_width = in_range(L, *width, "gauge.loop_width", field("gauge", "loop_width"));
+    p.gauge.loop_height = in_range(L, *height, "gauge.loop_height", field("gauge", "loop_height"));
   } else {
     fail(L, "gauge is empty; give stitches and rows per 10 cm, or loop_width and loop_height in mm");
   }
@@ -178,7 +184,7 @@ void read_gauge(lua_State* L, int index, Pattern& p) {
     if (y.diameter > thickest) thickest = y.diameter, thickest_id = y.id;
   }
   // Without a thickness the fabric is two yarns deep, as in the seed paper's examples.
-  p.gauge.thickness = thickness ? in_range(L, *thickness, "gauge.thickness", 0.0, 100.0, " mm") : 2.0 * thickest;
+  p.gauge.thickness = thickness ? in_range(L, *thickness, "gauge.thickness", field("gauge", "thickness")) : 2.0 * thickest;
   // A loop's width holds its two legs side by side: a yarn over half of it cannot fit.
   const double W = p.gauge.loop_width;
   if (thickest > 0.5 * W)
@@ -210,19 +216,21 @@ int pattern_verb(lua_State* L) {
     fail(L, "pattern{} was already given at line " + std::to_string(s.declared_line) + "; give it once");
   if (lua_type(L, 1) != LUA_TTABLE)
     fail(L, std::string("pattern takes a table: pattern { name = ..., gauge = ..., yarns = ... }, not a ") + luaL_typename(L, 1));
-  only_known_keys(L, 1, "pattern{}", {"name", "gauge", "yarns", "knitting", "seed"});
+  only_known_keys(L, 1, "pattern{}", "pattern");
   // Read whole before anything is kept: a pattern{} that fails half-way (and is caught
   // by pcall) leaves no yarns behind.
   Pattern p;
-  p.name = string_field(L, 1, "pattern{}", "name").value_or("untitled");
+  p.name = string_field(L, 1, "pattern{}", "name").value_or(std::string(field("pattern", "name").fallback));
   read_yarns(L, 1, p);  // before the gauge: its default thickness follows the yarn
   read_gauge(L, 1, p);
-  const std::string knitting = string_field(L, 1, "pattern{}", "knitting").value_or("round");
+  const std::string knitting = string_field(L, 1, "pattern{}", "knitting").value_or(std::string(field("pattern", "knitting").fallback));
   if (knitting == "flat") p.knitting = Knitting::flat;
   else if (knitting != "round") fail(L, "knitting is \"" + printable(knitting, 100) + "\"; use \"round\" or \"flat\"");
   lua_getfield(L, 1, "seed");
   if (!lua_isnil(L, -1)) {
-    const long long seed = whole_number(L, lua_gettop(L), "pattern{}.seed", -(1LL << 53), 1LL << 53);
+    const Field& f = field("pattern", "seed");
+    const long long seed =
+        whole_number(L, lua_gettop(L), "pattern{}.seed", static_cast<long long>(f.lo), static_cast<long long>(f.hi));
     if (!s.options.seed) {  // --seed wins over the script's
       lua_getglobal(L, "math");
       lua_getfield(L, -1, "randomseed");

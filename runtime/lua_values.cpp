@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "fields.hpp"
 #include "script.hpp"
 
 namespace knitc::runtime {
@@ -108,12 +109,13 @@ std::vector<std::string> sorted_keys(lua_State* L, int index, const std::string&
   return keys;
 }
 
-void only_known_keys(lua_State* L, int index, const std::string& table, std::initializer_list<const char*> known) {
+void only_known_keys(lua_State* L, int index, const std::string& table, std::string_view declared) {
   sorted_keys(L, index, table);  // every key must be a name
-  only_known_fields(L, index, table, known);
+  only_known_fields(L, index, table, declared);
 }
 
-void only_known_fields(lua_State* L, int index, const std::string& table, std::initializer_list<const char*> known) {
+void only_known_fields(lua_State* L, int index, const std::string& table, std::string_view declared) {
+  const std::vector<std::string> known = field_keys(declared);
   std::vector<std::string> named;
   index = lua_absindex(L, index);
   lua_pushnil(L);
@@ -127,9 +129,9 @@ void only_known_fields(lua_State* L, int index, const std::string& table, std::i
   }
   std::sort(named.begin(), named.end());  // the first unknown one, whatever the table order
   for (const std::string& key : named) {
-    if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) {
+    if (std::find(known.begin(), known.end(), key) == known.end()) {
       std::string list;
-      for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
       fail(L, "unknown field '" + printable(key, 100) + "' in " + table + "; known fields: " + list);
     }
   }

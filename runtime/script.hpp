@@ -53,9 +53,11 @@ std::optional<double> number_field(lua_State* L, int index, const std::string& t
 std::optional<std::string> string_field(lua_State* L, int index, const std::string& table, const char* key);
 // The keys of the table at index, sorted; all must be strings.
 std::vector<std::string> sorted_keys(lua_State* L, int index, const std::string& table);
-void only_known_keys(lua_State* L, int index, const std::string& table, std::initializer_list<const char*> known);
+// Every key of the table at index is a field declared for `declared` (fields.cpp);
+// `table` is how messages name it ("yarns.A").
+void only_known_keys(lua_State* L, int index, const std::string& table, std::string_view declared);
 // The same for a table that also holds a list: only its string keys are fields.
-void only_known_fields(lua_State* L, int index, const std::string& table, std::initializer_list<const char*> known);
+void only_known_fields(lua_State* L, int index, const std::string& table, std::string_view declared);
 long long whole_number(lua_State* L, int arg, const std::string& what, long long lo, long long hi);
 // The index of a declared yarn, or a located error naming the declared ones.
 int yarn_index(lua_State* L, const std::string& id);

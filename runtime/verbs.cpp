@@ -5,6 +5,7 @@
 // beside them; the knitting itself is in language/work.cpp.
 #include <algorithm>
 
+#include "fields.hpp"
 #include "language/knitspeak.hpp"
 #include "script.hpp"
 
@@ -123,7 +124,7 @@ int course_verb(lua_State* L) {
   need_pattern(L, "course");
   Script& s = script_of(L);
   if (lua_type(L, 1) != LUA_TTABLE) fail(L, std::string("course takes a table, e.g. course { k, p, rep = 6 }, not a ") + luaL_typename(L, 1));
-  only_known_fields(L, 1, "course{}", {"rep", "yarn"});
+  only_known_fields(L, 1, "course{}", "course");
   const lua_Integer n = luaL_len(L, 1);
   if (n == 0) fail(L, "course{} lists no stitches; give some, e.g. course { k, p }");
   if (n < 0 || n > max_stitches)
@@ -157,7 +158,8 @@ int course_verb(lua_State* L) {
     lua_pop(L, 1);
   }
   lua_getfield(L, 1, "rep");
-  if (!lua_isnil(L, -1)) text = "(" + text + ") x" + std::to_string(whole_number(L, lua_gettop(L), "course{}.rep", 1, max_stitches));
+  if (!lua_isnil(L, -1)) text = "(" + text + ") x" + std::to_string(whole_number(L, lua_gettop(L), "course{}.rep", static_cast<long long>(field("course", "rep").lo),
+                                                                                   static_cast<long long>(field("course", "rep").hi)));
   lua_pop(L, 1);
   const int saved_yarn = s.work.yarn();
   if (const auto yarn = string_field(L, 1, "course{}", "yarn")) s.work.change_yarn(yarn_index(L, *yarn));
@@ -205,11 +207,11 @@ int chart_verb(lua_State* L) {
   Script& s = script_of(L);
   language::Legend legend = s.legend;
   std::string text;
-  long long repeats = 1;
+  auto repeats = static_cast<long long>(field("chart", "rep").value);
   if (lua_type(L, 1) == LUA_TSTRING) {
     text = text_of(L, 1);
   } else if (lua_type(L, 1) == LUA_TTABLE) {
-    only_known_fields(L, 1, "chart{}", {"legend", "rep"});
+    only_known_fields(L, 1, "chart{}", "chart");
     lua_geti(L, 1, 1);
     if (lua_type(L, -1) != LUA_TSTRING) fail(L, "chart{} needs the chart text first: chart { [[ ... ]], rep = 2 }");
     text = text_of(L, -1);
@@ -221,7 +223,9 @@ int chart_verb(lua_State* L) {
     }
     lua_pop(L, 1);
     lua_getfield(L, 1, "rep");
-    if (!lua_isnil(L, -1)) repeats = whole_number(L, lua_gettop(L), "chart{}.rep", 1, max_stitches);
+    if (!lua_isnil(L, -1))
+      repeats = whole_number(L, lua_gettop(L), "chart{}.rep", static_cast<long long>(field("chart", "rep").lo),
+                             static_cast<long long>(field("chart", "rep").hi));
     lua_pop(L, 1);
   } else {
     fail(L, std::string("chart takes the chart as a string, chart [[ ... ]], or a table, not a ") + luaL_typename(L, 1));
@@ -346,13 +350,8 @@ int right_side_verb(lua_State* L) {
 
 constexpr Verb verbs[] = {
     {"pattern", pattern_verb, "pattern { name = S, gauge = {...}, yarns = {...}, knitting = \"round\"|\"flat\", seed = N }",
-     "Declares the pattern, once, before anything else. gauge: { stitches = S, rows = R } per 10 cm, or "
-     "{ loop_width = W, loop_height = H } in mm, either with an optional thickness in mm (default two yarn diameters). "
-     "yarns: a table of named yarns, each { diameter = mm } or { weight = name }, and color = \"#rrggbb\"; "
-     "section = \"circle\" (default), \"ellipse\" (aspect = minor/major, default 0.7: a yarn pressed flat) or "
-     "\"plied\" (plies = 2 to 6, default 2; twist = turns per 10 cm, default 15; direction = \"S\" (default) or \"Z\"). "
-     "knitting: \"round\" (default: every row is worked from the right side) or \"flat\" (even rows are wrong-side rows). "
-     "seed: math.random's seed (default 0; --seed overrides).",
+     "Declares the pattern, once, before anything else. The gauge is stitches and rows per 10 cm, or loop_width and "
+     "loop_height in mm (not both); each yarn has a diameter or a weight (not both). The fields are below.",
      "pattern { name = \"rib\", gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = \"dk\", color = \"#8a1c2b\" } } }"},
     {"cast_on", cast_on_verb, "cast_on(n [, yarn])", "Casts on n stitches, in the given yarn or the first declared one.",
      "cast_on(24)"},
