@@ -530,7 +530,10 @@ int run(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return c.app.exit(e);
   } catch (const CLI::ParseError& e) {
-    c.app.exit(e);
+    // CLI11 would print the bad argument as it came; it goes through report() like
+    // every other message (an argument can hold terminal escapes too).
+    report(e.what());
+    report("Run with --help for more information.");
     return exit_usage;
   }
   if (const int code = refuse_bad_outputs(c); code != 0) return code;

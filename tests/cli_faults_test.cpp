@@ -200,6 +200,14 @@ TEST(CliFaults, AFullDiskIsAnIoErrorForEveryOutput) {
   }
 }
 
+// A bad argument is quoted in the usage error: escaped, like every other message.
+TEST(CliFaults, MisuseMessagesAreFitForATerminal) {
+  const auto r = test::run_knitc(std::string("build ") + jersey + " -o x.glb --quality \"$(printf '\\033]0;pwned\\007\\033[2J')\"");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\\x1b"), std::string::npos) << r.err;
+}
+
 TEST(CliFaults, DashIsStandardOutputAndLongNamesWork) {
   const fs::path dir = test::scratch_dir("dash");
   const auto r = run_to("build " + jersey + " -q -o -", shell(dir / "piped.glb"));
