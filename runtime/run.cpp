@@ -1,6 +1,8 @@
 // Running a pattern script: the sandbox, the verbs and stitch names as globals, the
 // script, then the checks of the whole pattern.
+#include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <memory>
 
 #include "checks.hpp"
@@ -46,7 +48,8 @@ std::vector<std::string> warnings_of(const Script& script) {
   return out;
 }
 
-RunResult run_script(std::string_view source, const std::string& file, const RunOptions& options, Script& script) {
+RunResult run_script(std::string_view source, const std::string& file, const RunOptions& options, Script& script,
+                     const std::function<void(lua_State*)>& inspect = {}) {
   if (source.size() > max_source_bytes)
     throw PatternError(file + ":1: the pattern is " + std::to_string(source.size() >> 10) + " KiB; knitc reads patterns of at most " +
                        std::to_string(max_source_bytes >> 20) + " MiB");
@@ -73,6 +76,7 @@ RunResult run_script(std::string_view source, const std::string& file, const Run
     lua_setglobal(L, std::string(s.identifier).c_str());
   }
   run_chunk(L, source);
+  if (inspect) inspect(L);
 
   if (!script.declared)
     throw PatternError(file + ":1: the script never calls pattern{}; start it with pattern { name = ..., gauge = ..., yarns = ... }");
@@ -103,6 +107,55 @@ RunResult run_pattern(std::string_view source, const std::string& file, const Ru
     // The warnings given before the error are still news to the designer.
     throw PatternError(printable(e.what()), warnings_of(script));
   }
+}
+
+std::string library_markdown() {
+  namespace fs = std::filesystem;
+  std::vector<std::string> modules;
+  for (const auto& entry : fs::directory_iterator(KNITC_LIBRARY_DIR)) {
+    const std::string name = entry.path().stem().string();
+    if (entry.path().extension() == ".lua" && name != "working") modules.push_back(name);
+  }
+  std::sort(modules.begin(), modules.end());
+  std::string source = "pattern { gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = \"dk\" } } }\ncast_on(4)\n";
+  for (const std::string& m : modules) source += "require \"" + m + "\"\n";
+  source += "library_declared = require \"working\".declared\nrow \"k\"\n";
+  std::string md;
+  auto text = [](lua_State* L, int index, const char* key) {
+    lua_getfield(L, index, key);
+    std::string out = text_of(L, -1);
+    lua_pop(L, 1);
+    return out;
+  };
+  Script script;
+  // Beside the library, so its own lib/ is the library (not a lib/ where knitc runs).
+  const std::string file = (fs::path(KNITC_LIBRARY_DIR).parent_path() / "reference.lua").string();
+  run_script(source, file, {}, script, [&](lua_State* L) {
+    lua_getglobal(L, "library_declared");
+    const int declared = lua_gettop(L);
+    for (const std::string& m : modules) {
+      lua_getfield(L, declared, m.c_str());
+      if (!lua_istable(L, -1)) throw PatternError("patterns/lib/" + m + ".lua declares nothing (working.declare)");
+      const int module = lua_gettop(L);
+      md += "### " + m + "\n\n`local " + m + " = require \"" + m + "\"`: " + text(L, module, "summary") +
+            ".\n\n| call | what it does |\n|---|---|\n";
+      lua_getfield(L, module, "functions");
+      const int functions = lua_gettop(L);
+      for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(L, functions)); ++i) {
+        lua_rawgeti(L, functions, i);
+        lua_rawgeti(L, -1, 1);
+        const std::string call = text_of(L, -1);
+        lua_rawgeti(L, -2, 2);
+        const std::string doc = text_of(L, -1);
+        lua_pop(L, 3);
+        md += "| `" + call + "` | " + doc + " |\n";
+      }
+      lua_pop(L, 2);
+      md += "\n";
+    }
+    lua_pop(L, 1);
+  });
+  return md;
 }
 
 RunResult run_pattern_file(const std::string& path, const RunOptions& options) {

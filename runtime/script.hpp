@@ -68,6 +68,9 @@ int pattern_verb(lua_State* L);
 int require_verb(lua_State* L);
 // The yarn weight table of the reference docs.
 std::string yarn_weight_markdown();
+// The library's modules and functions, as each module declares them (working.declare),
+// for the reference docs.
+std::string library_markdown();
 // Makes the registry table require caches modules in.
 void open_modules(lua_State* L);
 // The first line of the long string that starts at or after `line` in the chunk

@@ -75,6 +75,20 @@ std::string exports_of(const std::string& module) {
   return message.substr(message.find(": ") + 2);  // after "t.lua:4: "
 }
 
+// The functions a module declares (working.declare, which the reference prints), sorted.
+std::string declared_by(const std::string& module) {
+  const std::string message = error_of(
+      "require \"" + module + "\"\nlocal names = {}\n"
+      "for _, f in ipairs(require \"working\".declared[\"" + module + "\"].functions) do\n"
+      "  names[#names + 1] = f[1]:match(\"^[%w_]+%.([%w_]+)\")\nend\n"
+      "table.sort(names)\nerror(table.concat(names, \" \"), 0)\n");
+  return message.substr(message.find(": ") + 2);
+}
+
+TEST(ModulesLibrary, EveryModuleDeclaresExactlyWhatItExports) {
+  for (const char* module : {"ribs", "cables", "lace"}) EXPECT_EQ(declared_by(module), exports_of(module)) << module;
+}
+
 TEST(ModulesLibrary, ExportsExactlyTheFunctionsTestedHere) {
   EXPECT_EQ(exports_of("ribs"), "garter k1p1 k2p2 moss rib seed");
   EXPECT_EQ(exports_of("cables"), "horseshoe rope");

@@ -2,17 +2,7 @@
 --
 --   local cables = require "cables"
 --
---   cables.rope{ rows = M, width = 4, cross = "front", cross_every = 4, purl_border = 2 }
---     A rope cable: width knit stitches (2, 4, 6 or 8) crossed half over half with
---     C<width>F (cross = "front", the front half moves left) or C<width>B ("back", it
---     moves right) every cross_every rows (default: the width), with purl_border purl
---     stitches (default 2, may be 0) between and beside the cables.
---     Stitches: a multiple of width + purl_border, plus purl_border; e.g. 14 for two
---     4-stitch ropes with 2 purls around each.
---   cables.horseshoe{ rows = M, width = 8, cross_every = 4, purl_border = 2 }
---     A horseshoe cable: width knit stitches (4, 8, 12 or 16); the crossing row works the
---     right half C<half>B and the left half C<half>F, so the stitches part from the
---     centre. cross_every defaults to half the width. Stitches as for rope.
+-- The functions are declared below (working.declare), and docs/language.md lists them.
 --
 -- Only rows is required. The panel repeats across all the live stitches, and the cables
 -- cross on rows cross_every - 1, 2 * cross_every - 1, ... of the whole piece as a chart
@@ -27,6 +17,18 @@ local cables = {}
 local row, live, knitting, right_side = row, live, knitting, right_side
 local working = require "working"
 local whole, shown, rows_problem, chart_row = working.whole, working.shown, working.rows_problem, working.chart_row
+
+working.declare("cables", "cable panels", {
+  { "cables.rope{ rows = M, width = 4, cross = \"front\", cross_every = 4, purl_border = 2 }",
+    "a rope cable: width knit stitches (2, 4, 6 or 8) crossed half over half with C<width>F (cross = \"front\", the "
+    .. "front half moves left) or C<width>B (\"back\", it moves right) every cross_every rows (default: the width), "
+    .. "with purl_border purl stitches (default 2, may be 0) between and beside the cables. Stitches: a multiple of "
+    .. "width + purl_border, plus purl_border; e.g. 14 for two 4-stitch ropes with 2 purls around each" },
+  { "cables.horseshoe{ rows = M, width = 8, cross_every = 4, purl_border = 2 }",
+    "a horseshoe cable: width knit stitches (4, 8, 12 or 16); the crossing row works the right half C<half>B and the "
+    .. "left half C<half>F, so the stitches part from the centre. cross_every defaults to half the width. Stitches as "
+    .. "for rope" },
+})
 
 -- The fields of args that the list `known` does not name, sorted, as one string; nil if
 -- none. (Sorted: the order pairs() visits them in never reaches a message.)

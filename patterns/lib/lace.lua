@@ -3,18 +3,7 @@
 --
 --   local lace = require "lace"
 --
---   lace.eyelet_row([rows])  one row of eyelets, k1, *yo, k2tog; rep from * to last st,
---                            k1, then rows - 1 rows of stockinette (rows defaults to 1):
---                            a drawstring or ribbon row. An even count of 4 or more. On
---                            a wrong-side row it is worked p1, *yo, p2tog, ..., p1.
---   lace.chevron(rows)       chevron lace: *k1, yo, k2, cdd, k2, yo; rep from * on odd
---                            rows, stockinette on even rows. A multiple of 8.
---   lace.feather_and_fan(rows)
---                            feather and fan (Old Shale), a 4-row repeat: row 1 knit,
---                            row 2 purl (the face knit), row 3 *(k2tog) x3, (yo, k1) x6,
---                            (k2tog) x3; rep from *, row 4 knit (the face purl, a
---                            ridge). A multiple of 18; rows a multiple of 4 ends a repeat.
---
+-- The functions are declared below (working.declare), and docs/language.md lists them.
 -- Each works `rows` rows (a whole number, 1 or more) and returns nothing. Chevron and
 -- feather and fan follow the row numbers of the whole piece as a chart counts them
 -- (working.chart_row: its row 1 is a right-side row): their lace rows are the chart's odd
@@ -27,6 +16,17 @@ local lace = {}
 local row, live, right_side = row, live, right_side
 local working = require "working"
 local whole, shown, rows_problem, chart_row = working.whole, working.shown, working.rows_problem, working.chart_row
+
+working.declare("lace", "eyelets and lace patterns that keep the stitch count", {
+  { "lace.eyelet_row([rows])", "one row of eyelets, k1, *yo, k2tog; rep from * to last st, k1, then rows - 1 rows of "
+    .. "stockinette (rows defaults to 1): a drawstring or ribbon row. An even count of 4 or more. On a wrong-side row "
+    .. "it is worked p1, *yo, p2tog, ..., p1" },
+  { "lace.chevron(rows)", "chevron lace: *k1, yo, k2, cdd, k2, yo; rep from * on the chart's odd rows, stockinette on "
+    .. "the even ones. A multiple of 8" },
+  { "lace.feather_and_fan(rows)", "feather and fan (Old Shale), a 4-row repeat: row 1 knit, row 2 purl (the face knit), "
+    .. "row 3 *(k2tog) x3, (yo, k1) x6, (k2tog) x3; rep from *, row 4 knit (the face purl, a ridge). A multiple of 18; "
+    .. "rows a multiple of 4 ends a repeat" },
+})
 
 -- One row whose face is all knit (stockinette) or all purl.
 local function plain_row(face_knit)

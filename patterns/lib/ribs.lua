@@ -2,19 +2,7 @@
 --
 --   local ribs = require "ribs"
 --
---   ribs.rib(rows, knits, purls)  a kN, pM rib. Stitches: a multiple of knits + purls,
---                                 or that plus knits (the rib then starts and ends with
---                                 knits: the usual way to rib a flat piece).
---   ribs.k1p1(rows)               k1, p1 rib: a multiple of 2, or of 2 plus 1.
---   ribs.k2p2(rows)               k2, p2 rib: a multiple of 4, or of 4 plus 2.
---   ribs.garter(rows)             garter stitch: knit every row flat; in the round knit and
---                                 purl rows alternate. Any stitch count.
---   ribs.seed(rows)               seed stitch (US seed, UK moss): k1, p1, moved over one
---                                 stitch every row. Any count of 2 or more.
---   ribs.moss(rows)               US moss stitch (UK double moss): k1, p1, moved over one
---                                 stitch every 2 rows, a 4-row repeat. Any count of 2 or
---                                 more. For UK moss stitch call ribs.seed.
---
+-- The functions are declared below (working.declare), and docs/language.md lists them.
 -- Each function works `rows` rows (a whole number, 1 or more) and returns nothing. The
 -- face comes out the same flat or in the round: the functions ask right_side() and
 -- write a wrong-side row as a knitter does (k where the face shows p). Garter, seed and
@@ -28,6 +16,17 @@ local ribs = {}
 local row, live, right_side = row, live, right_side
 local working = require "working"
 local whole, shown, rows_problem, chart_row = working.whole, working.shown, working.rows_problem, working.chart_row
+
+working.declare("ribs", "ribbing and the small knit-and-purl textures", {
+  { "ribs.rib(rows, knits, purls)", "a kN, pM rib. Stitches: a multiple of knits + purls, or that plus knits (the rib "
+    .. "then starts and ends with knits: the usual way to rib a flat piece)" },
+  { "ribs.k1p1(rows)", "k1, p1 rib: a multiple of 2, or of 2 plus 1" },
+  { "ribs.k2p2(rows)", "k2, p2 rib: a multiple of 4, or of 4 plus 2" },
+  { "ribs.garter(rows)", "garter stitch: knit every row flat; in the round knit and purl rows alternate. Any stitch count" },
+  { "ribs.seed(rows)", "seed stitch (US seed, UK moss): k1, p1, moved over one stitch every row. Any count of 2 or more" },
+  { "ribs.moss(rows)", "US moss stitch (UK double moss): k1, p1, moved over one stitch every 2 rows, a 4-row repeat. "
+    .. "Any count of 2 or more. For UK moss stitch call ribs.seed" },
+})
 
 local function sts(n)
   return n == 1 and "1 st" or n .. " sts"

@@ -6,10 +6,21 @@
 --   working.rows_problem(name, n)   what is wrong with a row count, or nil
 --   working.chart_row()             the next row's number as a chart of the pattern
 --                                   counts it: from a right-side row 1
+--   working.declare(module, summary, functions)
+--                                   declares a module's functions, { { call, what it
+--                                   does }, ... }, once: `knitc reference` prints them
+--                                   into docs/language.md
 --
 -- Which side a row is worked from is the runtime's rule alone: right_side().
 
 local working = {}
+
+-- The library's declarations, by module name (working.declare).
+working.declared = {}
+
+function working.declare(module, summary, functions)
+  working.declared[module] = { summary = summary, functions = functions }
+end
 
 local row_number, right_side = row_number, right_side
 
