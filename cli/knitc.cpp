@@ -31,6 +31,7 @@
 #include "mesh/bounds.hpp"
 #include "render.hpp"
 #include "runtime.hpp"
+#include "language/chart.hpp"
 #include "writers/writers.hpp"
 
 namespace {
@@ -239,7 +240,7 @@ int snapshot(const Args& args) {
 int chart(const Args& args) {
   auto loaded = load(args);
   if (const int* code = std::get_if<int>(&loaded)) return *code;
-  return write({knitc::writers::text_file("-", knitc::writers::chart_text(std::get<knitc::Pattern>(loaded)))});
+  return write({knitc::writers::text_file("-", knitc::language::chart_text(std::get<knitc::Pattern>(loaded)))});
 }
 
 int check(const Args& args) {

@@ -33,7 +33,7 @@ constexpr std::array<Weight, 8> weights{{
 constexpr double wpi_flattening = 0.85;
 
 std::optional<double> weight_diameter(const std::string& name) {
-  const std::string key = lower(name);
+  const std::string key = language::lower(name);
   for (const Weight& w : weights) {
     std::string spellings = std::string(w.name) + "|" + w.aliases;
     std::size_t start = 0;
@@ -121,7 +121,7 @@ void read_yarns(lua_State* L, int index, Pattern& p) {
   const int yarns = lua_gettop(L);
   for (const std::string& id : sorted_keys(L, yarns, "yarns")) {
     if (!is_identifier(id)) fail(L, "yarn name '" + id + "' must be a short name of letters, digits and _, such as A or MC");
-    if (find_stitch(id)) fail(L, "yarn name '" + id + "' is also a stitch; name it otherwise, e.g. " + id + "1");
+    if (language::find_stitch(id)) fail(L, "yarn name '" + id + "' is also a stitch; name it otherwise, e.g. " + id + "1");
     lua_getfield(L, yarns, id.c_str());
     if (!lua_istable(L, -1)) fail(L, "yarns." + id + " must be a table such as { diameter = 1.0, color = \"#d9c8a9\" }");
     const int t = lua_gettop(L);

@@ -67,23 +67,26 @@ std::string language_reference() {
         "in charts too.\n\n"
         "| name | also written | chart | Lua | works | makes | wrong side shows as | what it is |\n"
         "|---|---|---|---|---|---|---|---|\n";
-  for (const StitchDef& s : stitch_table()) {
-    std::string aliases(s.aliases);
+  const auto table = stitch_table();
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const StitchDef& s = table[i];
+    const language::StitchWords& w = language::words(static_cast<StitchId>(i));
+    std::string aliases(w.aliases);
     for (char& c : aliases) {
       if (c == '|') c = ',';
     }
-    md += "| " + code(s.name) + (s.counted ? " *n*" : "") + " | " + escape_cell(aliases) + " | " + code(s.symbol) + " | " +
-          (s.identifier.empty() ? "" : code(s.identifier)) + " | " + std::to_string(s.consumes) + " | " +
+    md += "| " + code(s.name) + (w.counted ? " *n*" : "") + " | " + escape_cell(aliases) + " | " + code(w.symbol) + " | " +
+          (w.identifier.empty() ? "" : code(w.identifier)) + " | " + std::to_string(s.consumes) + " | " +
           std::to_string(s.produces) + " | " + (s.wrong_side_face.empty() ? "(right side only)" : code(s.wrong_side_face)) +
-          " | " + escape_cell(s.summary) + " |\n";
+          " | " + escape_cell(w.summary) + " |\n";
   }
   md += "\n## Chart symbols\n\nThe default legend; `legend {}` and `chart { legend = {} }` add symbols or change them. "
         "Symbols may be written with or without spaces between them; the longest symbol that fits is read first. A "
         "cable's name may be followed by `-` to draw its width, as `knitc chart` prints it (`C4F----`).\n\n"
         "| symbol | stitch |\n|---|---|\n";
   for (const auto& e : language::default_legend().entries) {
-    const StitchDef& s = stitch(e.worked.stitch);
-    if (e.symbol == s.symbol) md += "| " + code(e.symbol) + " | " + std::string(s.name) + " |\n";
+    if (e.symbol == language::words(e.worked.stitch).symbol)
+      md += "| " + code(e.symbol) + " | " + std::string(stitch(e.worked.stitch).name) + " |\n";
   }
   md += "\n## Yarn weights\n\n`weight = name` gives the yarn a round diameter of 0.85 x 25.4 / WPI, at the middle "
         "of the weight's wraps-per-inch range: wrapping flattens the yarn, so WPI alone overstates its round diameter.\n\n" +

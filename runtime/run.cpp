@@ -70,10 +70,12 @@ RunResult run_script(std::string_view source, const std::string& file, const Run
     lua_setglobal(L, v.name);
   }
   open_modules(L);
-  for (const StitchDef& s : stitch_table()) {
-    if (s.identifier.empty()) continue;
-    lua_pushlstring(L, s.name.data(), s.name.size());
-    lua_setglobal(L, std::string(s.identifier).c_str());
+  const auto table = stitch_table();
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const std::string_view identifier = language::words(static_cast<StitchId>(i)).identifier;
+    if (identifier.empty()) continue;
+    lua_pushlstring(L, table[i].name.data(), table[i].name.size());
+    lua_setglobal(L, std::string(identifier).c_str());
   }
   run_chunk(L, source);
   if (inspect) inspect(L);
@@ -137,21 +139,32 @@ std::string library_markdown() {
       lua_getfield(L, declared, m.c_str());
       if (!lua_istable(L, -1)) throw PatternError("patterns/lib/" + m + ".lua declares nothing (working.declare)");
       const int module = lua_gettop(L);
-      md += "### " + m + "\n\n`local " + m + " = require \"" + m + "\"`: " + text(L, module, "summary") +
-            ".\n\n| call | what it does |\n|---|---|\n";
+      md += "### " + m + "\n\n`local " + m + " = require \"" + m + "\"`: " + text(L, module, "summary") + ".\n\n";
       lua_getfield(L, module, "functions");
       const int functions = lua_gettop(L);
       for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(L, functions)); ++i) {
         lua_rawgeti(L, functions, i);
-        lua_rawgeti(L, -1, 1);
-        const std::string call = text_of(L, -1);
-        lua_rawgeti(L, -2, 2);
-        const std::string doc = text_of(L, -1);
-        lua_pop(L, 3);
-        md += "| `" + call + "` | " + doc + " |\n";
+        const int function = lua_gettop(L);
+        const std::string call = text(L, function, "call");
+        md += "#### `" + call + "`\n\n" + text(L, function, "doc") + ".\n\n| " +
+              (call.find('{') != std::string::npos ? "field" : "argument") + " | takes | default | |\n|---|---|---|---|\n";
+        lua_getfield(L, function, "args");
+        for (lua_Integer a = 1; a <= static_cast<lua_Integer>(lua_rawlen(L, -1)); ++a) {
+          lua_rawgeti(L, -1, a);
+          md += "|";
+          for (int column = 1; column <= 4; ++column) {
+            lua_rawgeti(L, -1, column);
+            const std::string cell = text_of(L, -1);
+            md += " " + (column == 1 ? "`" + cell + "`" : cell) + " |";
+            lua_pop(L, 1);
+          }
+          md += "\n";
+          lua_pop(L, 1);
+        }
+        lua_pop(L, 2);
+        md += "\n";
       }
       lua_pop(L, 2);
-      md += "\n";
     }
     lua_pop(L, 1);
   });

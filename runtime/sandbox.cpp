@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "stitches/stitches.hpp"
+#include "language/words.hpp"
 
 namespace knitc::runtime {
 
@@ -245,7 +245,7 @@ std::string global_hint(lua_State* L, const std::string& message) {
   std::string best;
   int best_distance = 3;
   for (const auto& n : names) {
-    const int d = edit_distance(name, n);
+    const int d = language::edit_distance(name, n);
     if (d < best_distance) best_distance = d, best = n;
   }
   return best.empty() ? "" : "; did you mean " + best + "?";

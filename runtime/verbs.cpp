@@ -185,8 +185,8 @@ void read_legend(lua_State* L, int index, language::Legend& legend, const std::s
     } else {
       fail(L, where + "[\"" + symbol + "\"] must be a stitch name, not a " + luaL_typename(L, -1));
     }
-    const auto id = find_stitch(name);
-    if (!id) fail(L, where + "[\"" + symbol + "\"] is '" + name + "', an unknown stitch; did you mean " + nearest_stitch_name(name) + "?");
+    const auto id = language::find_stitch(name);
+    if (!id) fail(L, where + "[\"" + symbol + "\"] is '" + name + "', an unknown stitch; did you mean " + language::nearest_stitch_name(name) + "?");
     if (!legend.set(symbol, {*id, yarn})) fail(L, where + " symbol \"" + symbol + "\" must be one or more characters without spaces");
     lua_pop(L, 1);
   }

@@ -2,6 +2,7 @@
 // and counts; the written rows' printed forms (open repeats, psso, "knit the knit sts");
 // and the knitter-written corpus in ../shared/corpus, compiled from its translation and
 // from its raw text, with stitch counts worked by hand.
+#include <cctype>
 #include <filesystem>
 #include <map>
 #include <regex>
@@ -11,6 +12,7 @@
 #include "compile.hpp"
 #include "knit_graph/knit_graph.hpp"
 #include "language/knitspeak.hpp"
+#include "language/words.hpp"
 #include "support.hpp"
 
 namespace knitc {
@@ -153,20 +155,49 @@ TEST(Stitches, IncreasesWorkEveryNewLoopThroughTheOldOne) {
   for (int i = g.course_first[1]; i < g.course_first[2]; ++i) EXPECT_EQ(g.loops[static_cast<std::size_t>(i)].parents.size(), 1u);
 }
 
+using language::find_stitch;
+
 // No spelling is shadowed by another stitch's: each finds its own stitch.
 TEST(Stitches, EverySpellingNamesOneStitch) {
   const auto table = stitch_table();
   for (std::size_t i = 0; i < table.size(); ++i) {
-    std::vector<std::string> spellings{std::string(table[i].name)};
-    std::string_view rest = table[i].aliases;
-    while (!rest.empty()) {
-      const auto bar = rest.find('|');
-      spellings.emplace_back(rest.substr(0, bar));
-      rest = bar == std::string_view::npos ? std::string_view{} : rest.substr(bar + 1);
-    }
-    for (const auto& w : spellings) EXPECT_EQ(find_stitch(w), static_cast<StitchId>(i)) << w << " of " << table[i].name;
+    const auto id = static_cast<StitchId>(i);
+    language::for_each_spelling(id, [&](std::string_view w) { EXPECT_EQ(find_stitch(w), id) << w << " of " << table[i].name; });
   }
   EXPECT_GE(table.size(), 120u);  // the core, the printed vocabulary, the generated crosses
+}
+
+// A cross is made once, by its facts: every cable's Stitch Maps notation, worked out from
+// what it does, is a spelling of that very stitch (C4F is 2/2 LC), and no two cables do
+// the same thing.
+TEST(Stitches, EveryCrossIsSpelledByItsNotation) {
+  const auto table = stitch_table();
+  int cables = 0;
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const StitchDef& s = table[i];
+    if (s.family != StitchFamily::cable) {
+      EXPECT_EQ(cross_notation(s), "") << s.name;
+      continue;
+    }
+    ++cables;
+    const std::string notation = cross_notation(s);
+    EXPECT_EQ(find_stitch(notation), static_cast<StitchId>(i)) << notation << " should spell " << s.name;
+    for (std::size_t j = i + 1; j < table.size(); ++j)
+      EXPECT_NE(cross_notation(table[j]), notation) << s.name << " and " << table[j].name << " are one cross";
+  }
+  EXPECT_EQ(cables, 8 * (16 + 9));  // every cross of the generated range, the core's 14 among them
+}
+
+// Every stitch has its words, and the words follow the facts: a chart symbol, a summary;
+// a Lua name that is an identifier.
+TEST(Stitches, EveryStitchHasItsWords) {
+  const auto table = stitch_table();
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const language::StitchWords& w = language::words(static_cast<StitchId>(i));
+    EXPECT_FALSE(w.symbol.empty()) << table[i].name;
+    EXPECT_FALSE(w.summary.empty()) << table[i].name;
+    for (char c : w.identifier) EXPECT_TRUE(std::isalnum(static_cast<unsigned char>(c)) || c == '_') << table[i].name;
+  }
 }
 
 TEST(Stitches, CrossesInBothNotations) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "support.hpp"
+#include "language/chart.hpp"
 #include "writers/writers.hpp"
 
 namespace knitc {
@@ -149,7 +150,7 @@ TEST(Charts, StitchesWithoutAWrongSideFormStayOnRightSideRows) {
 
 TEST(ChartText, NumbersEachRowOnTheSideItIsReadFrom) {
   const Pattern p = run("cast_on(4)\nrow \"k2, p2\"\nrow \"k1, p1\"\nrow \"k2tog, yo, k2\"\n", true);
-  EXPECT_EQ(writers::chart_text(p),
+  EXPECT_EQ(language::chart_text(p),
             "# t: 3 rows on 4 stitches, flat; right side shown, row 1 at the bottom, each row numbered on the side it is "
             "read from\n"
             "   | | O /  3\n"
@@ -159,7 +160,7 @@ TEST(ChartText, NumbersEachRowOnTheSideItIsReadFrom) {
 
 TEST(ChartText, ShowsCablesAcrossTheirWidthAndYarns) {
   const Pattern p = run("cast_on(6)\nrow \"p1, C4F, p1\"\nrow \"k1 A, k1 B\"\n");
-  EXPECT_EQ(writers::chart_text(p),
+  EXPECT_EQ(language::chart_text(p),
             "# t: 2 rows on 6 stitches, in the round; right side shown, row 1 at the bottom, each row numbered on the "
             "side it is read from\n"
             "   | | | | | |  2   B A B A B A\n"

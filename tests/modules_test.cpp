@@ -12,6 +12,7 @@
 
 #include "runtime.hpp"
 #include "support.hpp"
+#include "language/chart.hpp"
 #include "writers/writers.hpp"
 
 namespace knitc {
@@ -61,8 +62,8 @@ std::string error_of(const std::string& knitting, int stitches, const std::strin
   }
   if (a == b) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << knitting << ", " << stitches << " sts: " << library
-                                       << "\nthe library made:\n" << writers::chart_text(a)
-                                       << "\nby hand:\n" << writers::chart_text(b);
+                                       << "\nthe library made:\n" << language::chart_text(a)
+                                       << "\nby hand:\n" << language::chart_text(b);
 }
 
 const std::vector<std::string> both = {"round", "flat"};
@@ -80,13 +81,54 @@ std::string declared_by(const std::string& module) {
   const std::string message = error_of(
       "require \"" + module + "\"\nlocal names = {}\n"
       "for _, f in ipairs(require \"working\".declared[\"" + module + "\"].functions) do\n"
-      "  names[#names + 1] = f[1]:match(\"^[%w_]+%.([%w_]+)\")\nend\n"
+      "  names[#names + 1] = f.call:match(\"^[%w_]+%.([%w_]+)\")\nend\n"
       "table.sort(names)\nerror(table.concat(names, \" \"), 0)\n");
   return message.substr(message.find(": ") + 2);
 }
 
 TEST(ModulesLibrary, EveryModuleDeclaresExactlyWhatItExports) {
   for (const char* module : {"ribs", "cables", "lace"}) EXPECT_EQ(declared_by(module), exports_of(module)) << module;
+}
+
+// Each argument of each library function is checked as its declaration says, in the very
+// words the reference prints in its "takes" column: a value no declaration allows (a
+// table) in that argument alone, the others valid, fails with that text.
+TEST(ModulesLibrary, EveryArgumentIsCheckedAsTheReferenceSays) {
+  const std::string checks = R"lua(
+local failures, count = {}, 0
+local function valid(arg)
+  if arg.default ~= nil then return arg.default end
+  if arg.values then return arg.values[1] end
+  if arg.choices then return arg.choices[1] end
+  return arg.least or 1
+end
+for _, module in ipairs({ "cables", "lace", "ribs" }) do
+  for _, f in ipairs(require "working".declared[module].functions) do
+    local name = f.call:match("^([%w_]+%.[%w_]+)")
+    local fn = require(module)[name:match("%.(.*)$")]
+    local table_call = f.call:find("{", 1, true) ~= nil
+    for i, arg in ipairs(f.declaration) do
+      local values = {}
+      for j, other in ipairs(f.declaration) do values[j] = valid(other) end
+      values[i] = {}
+      local ok, message
+      if table_call then
+        local t = {}
+        for j, other in ipairs(f.declaration) do t[other[1]] = values[j] end
+        ok, message = pcall(fn, t)
+      else
+        ok, message = pcall(fn, table.unpack(values, 1, #f.declaration))
+      end
+      local expected = name .. ": " .. arg[1] .. " must be " .. f.args[i][2] .. ", not a table"
+      count = count + 1
+      if ok or not message:find(expected, 1, true) then failures[#failures + 1] = expected .. " <- " .. tostring(message) end
+    end
+  end
+end
+error(count .. " checked; " .. table.concat(failures, "; "), 0)
+)lua";
+  const std::string message = error_of("flat", 14, checks);
+  EXPECT_EQ(message.substr(message.find(": ") + 2), "20 checked; ") << message;
 }
 
 TEST(ModulesLibrary, ExportsExactlyTheFunctionsTestedHere) {

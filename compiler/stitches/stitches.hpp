@@ -1,7 +1,7 @@
-// The stitch vocabulary, declared once as data: every stitch's written name and
-// aliases, chart symbol, Lua identifier, stitch counts, and the facts its geometry and
-// the wrong-side bookkeeping need. The pattern language, `knitc chart`, the reference
-// docs and the error hints are all read from this table.
+// What every stitch is, declared once as data: its canonical name, the stitches it works
+// and makes, and the facts its geometry and the wrong-side bookkeeping need. How patterns
+// write a stitch (spellings, chart symbols, Lua names) is the language's, next to its
+// parsers: runtime/language/words.hpp.
 #pragma once
 
 #include <cstdint>
@@ -41,13 +41,9 @@ struct Cable {
 };
 
 struct StitchDef {
-  std::string_view name;         // canonical written name, as `knitc chart` and docs print it
-  std::string_view aliases;      // other written spellings, separated by '|'
-  std::string_view symbol;       // chart symbol (the name is accepted in charts too)
-  std::string_view identifier;   // the Lua global of the plain form, e.g. course { k, p }
+  std::string_view name;         // canonical name: the stitch's identity in files and messages
   int consumes = 1;              // live stitches it works
   int produces = 1;              // loops it leaves on the needle
-  bool counted = false;          // takes a repeat count: k2, p3, yo2, sl2 wyif
   StitchFamily family = StitchFamily::knit;
   Lean lean = Lean::none;
   Cable cable;                   // for the cable family
@@ -56,26 +52,18 @@ struct StitchDef {
   // The stitch as it shows on the face when worked on a wrong-side row (k shows as p);
   // empty if it has no wrong-side form.
   std::string_view wrong_side_face;
-  std::string_view summary;      // one line for the reference docs
 };
 
 std::span<const StitchDef> stitch_table();
 const StitchDef& stitch(StitchId id);
-std::optional<StitchId> find_stitch(std::string_view name_or_alias);  // case-insensitive
 StitchId stitch_id(std::string_view canonical_name);                    // asserts it exists
 // Whether the stitch's new loops are purled (pulled through from the front: a bump on
 // the face): purls, p-decreases and p-increases, ssp, m1p.
 bool purled(const StitchDef& s);
 // The face-view stitch for `id` worked on a wrong-side row, if it has one.
 std::optional<StitchId> wrong_side_face(StitchId id);
-// The known name or alias nearest to `word` (edit distance), for "did you mean" hints.
-std::string nearest_stitch_name(std::string_view word);
-
-// `s` in lower case (ASCII letters only, as the pattern language's spellings are): the one
-// lowercasing of the stitch table, the written rows, knitspeak and the declarations.
-std::string lower(std::string_view s);
-
-// Edit distance (Levenshtein, case-insensitive), for hints.
-int edit_distance(std::string_view a, std::string_view b);
+// The cable family's crosses in the Stitch Maps notation ("2/2 LC", "2/1/2 RPC"): the
+// name a cross's facts give it. Empty for other stitches.
+std::string cross_notation(const StitchDef& s);
 
 }  // namespace knitc

@@ -40,12 +40,6 @@ std::string glb(const mesh::Mesh& mesh, const std::string& generator, const GlbO
 // space (in the round, wrapped onto the tube) and in the yarn's working order.
 std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_paths::LoopModel model);
 
-// The pattern's stitch chart as text: one line per course, top course first, chart
-// symbols from the default legend, each row's number on the side it is read from (right
-// for right-side rows, left for wrong-side rows); yarn ids after each row when the
-// pattern changes yarn.
-std::string chart_text(const Pattern& pattern);
-
 // A short, stable, diff-friendly summary of a compiled fabric for snapshot tests: counts,
 // each yarn's length (0.001 mm) and the sanity figures from `measures` (the measuring
 // stage's, for this fabric), the bounds (0.001 mm) and a 64-bit FNV-1a hash of every

@@ -2,7 +2,8 @@
 --
 --   local cables = require "cables"
 --
--- The functions are declared below (working.declare), and docs/language.md lists them.
+-- The functions are declared below (working.define: the fields of the table each takes
+-- are checked from the declaration, and docs/language.md lists them).
 --
 -- Only rows is required. The panel repeats across all the live stitches, and the cables
 -- cross on rows cross_every - 1, 2 * cross_every - 1, ... of the whole piece as a chart
@@ -16,72 +17,30 @@ local cables = {}
 
 local row, live, knitting, right_side = row, live, knitting, right_side
 local working = require "working"
-local whole, shown, rows_problem, chart_row = working.whole, working.shown, working.rows_problem, working.chart_row
+local chart_row = working.chart_row
 
-working.declare("cables", "cable panels", {
-  { "cables.rope{ rows = M, width = 4, cross = \"front\", cross_every = 4, purl_border = 2 }",
-    "a rope cable: width knit stitches (2, 4, 6 or 8) crossed half over half with C<width>F (cross = \"front\", the "
-    .. "front half moves left) or C<width>B (\"back\", it moves right) every cross_every rows (default: the width), "
-    .. "with purl_border purl stitches (default 2, may be 0) between and beside the cables. Stitches: a multiple of "
-    .. "width + purl_border, plus purl_border; e.g. 14 for two 4-stitch ropes with 2 purls around each" },
-  { "cables.horseshoe{ rows = M, width = 8, cross_every = 4, purl_border = 2 }",
-    "a horseshoe cable: width knit stitches (4, 8, 12 or 16); the crossing row works the right half C<half>B and the "
-    .. "left half C<half>F, so the stitches part from the centre. cross_every defaults to half the width. Stitches as "
-    .. "for rope" },
-})
+working.declare("cables", "cable panels")
 
--- The fields of args that the list `known` does not name, sorted, as one string; nil if
--- none. (Sorted: the order pairs() visits them in never reaches a message.)
-local function unknown_fields(args, known)
-  local is_known, unknown = {}, {}
-  for _, key in ipairs(known) do is_known[key] = true end
-  for key in pairs(args) do
-    if not is_known[key] then unknown[#unknown + 1] = type(key) == "string" and key or "[" .. shown(key) .. "]" end
-  end
-  if #unknown == 0 then return nil end
-  table.sort(unknown)
-  return table.concat(unknown, ", ")
+local rows_field = { "rows", "whole", least = 1, doc = "rows worked" }
+local function every_field(default_doc)
+  return { "cross_every", "whole", least = 1, optional = true, default_doc = default_doc,
+    doc = "rows from one crossing to the next" }
 end
+local border_field = { "purl_border", "whole", least = 0, default = 2,
+  doc = "purl stitches between and beside the cables (may be 0)" }
 
--- Reads and checks a panel's options: the options, or nil and what is wrong.
--- fields: the options it takes, sorted; widths: the allowed widths; default_every(width).
-local function read_panel(name, args, fields, widths, default_width, default_every)
-  if type(args) ~= "table" then
-    return nil, ("%s takes a table, e.g. %s{ rows = 12 }, not %s"):format(name, name, shown(args))
+-- The panel's options checked together, or nil and what is wrong before working anything.
+local function panel(name, rows, width, every, border)
+  if knitting() == "flat" and every % 2 == 1 then
+    return nil, ("%s: cross_every is %d, but flat cables cross on right-side rows only; make it even"):format(name, every)
   end
-  local unknown = unknown_fields(args, fields)
-  if unknown then
-    return nil, name .. ": unknown field(s) " .. unknown .. "; known fields: " .. table.concat(fields, ", ")
-  end
-  local o = {}
-  o.rows = whole(args.rows, 1)
-  if not o.rows then return nil, name .. ": rows must be a whole number from 1 up, not " .. shown(args.rows) end
-  o.width = args.width == nil and default_width or whole(args.width, 1)
-  if not (o.width and widths[o.width]) then
-    return nil, name .. ": width must be " .. widths.text .. ", not " .. shown(args.width)
-  end
-  o.cross = args.cross == nil and "front" or args.cross  -- horseshoe: never given
-  if o.cross ~= "front" and o.cross ~= "back" then
-    return nil, name .. ": cross must be \"front\" or \"back\", not " .. shown(args.cross)
-  end
-  o.every = args.cross_every == nil and default_every(o.width) or whole(args.cross_every, 1)
-  if not o.every then
-    return nil, name .. ": cross_every must be a whole number from 1 up, not " .. shown(args.cross_every)
-  end
-  if knitting() == "flat" and o.every % 2 == 1 then
-    return nil, ("%s: cross_every is %d, but flat cables cross on right-side rows only; make it even"):format(name, o.every)
-  end
-  o.border = args.purl_border == nil and 2 or whole(args.purl_border, 0)
-  if not o.border then
-    return nil, name .. ": purl_border must be a whole number from 0 up, not " .. shown(args.purl_border)
-  end
-  local n, repeat_width = live(), o.width + o.border
-  if n > 0 and (n % repeat_width ~= o.border % repeat_width or n < repeat_width + o.border) then
-    local plus = o.border > 0 and (" plus %d"):format(o.border) or ""
+  local n, repeat_width = live(), width + border
+  if n > 0 and (n % repeat_width ~= border % repeat_width or n < repeat_width + border) then
+    local plus = border > 0 and (" plus %d"):format(border) or ""
     return nil, ("%s needs a multiple of %d stitches%s (width %d, purl_border %d); %d are live"):format(
-      name, repeat_width, plus, o.width, o.border, n)
+      name, repeat_width, plus, width, border, n)
   end
-  return o
+  return { rows = rows, width = width, every = every, border = border }
 end
 
 -- The panel row with `cable` (written stitches) between purl borders of `border`
@@ -104,23 +63,35 @@ local function work_panel(o, crossing)
   end
 end
 
-local rope_widths = { [2] = true, [4] = true, [6] = true, [8] = true, text = "2, 4, 6 or 8" }
+cables.rope = working.define("cables", {
+  name = "rope",
+  doc = "a rope cable: width knit stitches crossed half over half with C<width>F (cross = \"front\", the front half "
+    .. "moves left) or C<width>B (\"back\", it moves right) every cross_every rows, between purl borders. Stitches: a "
+    .. "multiple of width + purl_border, plus purl_border; e.g. 14 for two 4-stitch ropes with 2 purls around each",
+  fields = { rows_field,
+    { "width", "whole", values = { 2, 4, 6, 8 }, default = 4, doc = "the cable's knit stitches" },
+    { "cross", "choice", choices = { "front", "back" }, default = "front", doc = "where the cable needle is held" },
+    every_field("the width"), border_field },
+  work = function(rows, width, cross, every, border)
+    local o, problem = panel("cables.rope", rows, width, every or width, border)
+    if not o then return problem end
+    work_panel(o, ("C%d%s"):format(width, cross == "front" and "F" or "B"))
+  end,
+})
 
-function cables.rope(args)
-  local o, problem = read_panel("cables.rope", args, { "cross", "cross_every", "purl_border", "rows", "width" },
-    rope_widths, 4, function(width) return width end)
-  if not o then error(problem, 2) end
-  work_panel(o, ("C%d%s"):format(o.width, o.cross == "front" and "F" or "B"))
-end
-
-local horseshoe_widths = { [4] = true, [8] = true, [12] = true, [16] = true, text = "4, 8, 12 or 16" }
-
-function cables.horseshoe(args)
-  local o, problem = read_panel("cables.horseshoe", args, { "cross_every", "purl_border", "rows", "width" },
-    horseshoe_widths, 8, function(width) return width // 2 end)
-  if not o then error(problem, 2) end
-  local half = o.width // 2
-  work_panel(o, ("C%dB, C%dF"):format(half, half))
-end
+cables.horseshoe = working.define("cables", {
+  name = "horseshoe",
+  doc = "a horseshoe cable: width knit stitches; the crossing row works the right half C<half>B and the left half "
+    .. "C<half>F, so the stitches part from the centre. Stitches as for rope",
+  fields = { rows_field,
+    { "width", "whole", values = { 4, 8, 12, 16 }, default = 8, doc = "the cable's knit stitches" },
+    every_field("half the width"), border_field },
+  work = function(rows, width, every, border)
+    local o, problem = panel("cables.horseshoe", rows, width, every or width // 2, border)
+    if not o then return problem end
+    local half = width // 2
+    work_panel(o, ("C%dB, C%dF"):format(half, half))
+  end,
+})
 
 return cables

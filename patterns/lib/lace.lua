@@ -3,30 +3,23 @@
 --
 --   local lace = require "lace"
 --
--- The functions are declared below (working.declare), and docs/language.md lists them.
--- Each works `rows` rows (a whole number, 1 or more) and returns nothing. Chevron and
--- feather and fan follow the row numbers of the whole piece as a chart counts them
--- (working.chart_row: its row 1 is a right-side row): their lace rows are the chart's odd
--- rows, the right side in flat knitting, and a second call continues the first. Flat or
--- in the round, the face comes out the same. A bad argument is an error at the line that
--- called the function.
+-- The functions are declared below (working.define: their arguments are checked from the
+-- declaration, and docs/language.md lists them). Each works `rows` rows and returns
+-- nothing. Chevron and feather and fan follow the row numbers of the whole piece as a
+-- chart counts them (working.chart_row: its row 1 is a right-side row): their lace rows
+-- are the chart's odd rows, the right side in flat knitting, and a second call continues
+-- the first. Flat or in the round, the face comes out the same. A bad argument is an
+-- error at the line that called the function.
 
 local lace = {}
 
 local row, live, right_side = row, live, right_side
 local working = require "working"
-local whole, shown, rows_problem, chart_row = working.whole, working.shown, working.rows_problem, working.chart_row
+local chart_row = working.chart_row
 
-working.declare("lace", "eyelets and lace patterns that keep the stitch count", {
-  { "lace.eyelet_row([rows])", "one row of eyelets, k1, *yo, k2tog; rep from * to last st, k1, then rows - 1 rows of "
-    .. "stockinette (rows defaults to 1): a drawstring or ribbon row. An even count of 4 or more. On a wrong-side row "
-    .. "it is worked p1, *yo, p2tog, ..., p1" },
-  { "lace.chevron(rows)", "chevron lace: *k1, yo, k2, cdd, k2, yo; rep from * on the chart's odd rows, stockinette on "
-    .. "the even ones. A multiple of 8" },
-  { "lace.feather_and_fan(rows)", "feather and fan (Old Shale), a 4-row repeat: row 1 knit, row 2 purl (the face knit), "
-    .. "row 3 *(k2tog) x3, (yo, k1) x6, (k2tog) x3; rep from *, row 4 knit (the face purl, a ridge). A multiple of 18; "
-    .. "rows a multiple of 4 ends a repeat" },
-})
+working.declare("lace", "eyelets and lace patterns that keep the stitch count")
+
+local rows_arg = { "rows", "whole", least = 1, doc = "rows worked" }
 
 -- One row whose face is all knit (stockinette) or all purl.
 local function plain_row(face_knit)
@@ -41,41 +34,59 @@ local function multiple_problem(name, multiple, least)
     name, multiple, least > multiple and (", at least " .. least) or "", n)
 end
 
-function lace.eyelet_row(rows)
-  if rows == nil then rows = 1 end
-  local problem = rows_problem("lace.eyelet_row", rows) or multiple_problem("lace.eyelet_row", 2, 4)
-  if problem then error(problem, 2) end
-  if right_side() then
-    row "k1, *yo, k2tog; rep from * to last 1 st, k1"
-  else
-    row "p1, *yo, p2tog; rep from * to last 1 st, p1"
-  end
-  for _ = 2, rows do plain_row(true) end
-end
-
-function lace.chevron(rows)
-  local problem = rows_problem("lace.chevron", rows) or multiple_problem("lace.chevron", 8, 8)
-  if problem then error(problem, 2) end
-  for _ = 1, rows do
-    if chart_row() % 2 == 1 then
-      row "*k1, yo, k2, cdd, k2, yo; rep from *"
+lace.eyelet_row = working.define("lace", {
+  name = "eyelet_row",
+  doc = "one row of eyelets, k1, *yo, k2tog; rep from * to last st, k1, then rows - 1 rows of stockinette: a "
+    .. "drawstring or ribbon row. An even count of 4 or more. On a wrong-side row it is worked p1, *yo, p2tog, ..., p1",
+  args = { { "rows", "whole", least = 1, default = 1, doc = "rows worked, the eyelets' first" } },
+  work = function(rows)
+    local problem = multiple_problem("lace.eyelet_row", 2, 4)
+    if problem then return problem end
+    if right_side() then
+      row "k1, *yo, k2tog; rep from * to last 1 st, k1"
     else
-      plain_row(true)
+      row "p1, *yo, p2tog; rep from * to last 1 st, p1"
     end
-  end
-end
+    for _ = 2, rows do plain_row(true) end
+  end,
+})
 
-function lace.feather_and_fan(rows)
-  local problem = rows_problem("lace.feather_and_fan", rows) or multiple_problem("lace.feather_and_fan", 18, 18)
-  if problem then error(problem, 2) end
-  for _ = 1, rows do
-    local step = (chart_row() - 1) % 4 + 1
-    if step == 3 then
-      row "*(k2tog) x3, (yo, k1) x6, (k2tog) x3; rep from *"
-    else
-      plain_row(step ~= 4)
+lace.chevron = working.define("lace", {
+  name = "chevron",
+  doc = "chevron lace: *k1, yo, k2, cdd, k2, yo; rep from * on the chart's odd rows, stockinette on the even ones. A "
+    .. "multiple of 8",
+  args = { rows_arg },
+  work = function(rows)
+    local problem = multiple_problem("lace.chevron", 8, 8)
+    if problem then return problem end
+    for _ = 1, rows do
+      if chart_row() % 2 == 1 then
+        row "*k1, yo, k2, cdd, k2, yo; rep from *"
+      else
+        plain_row(true)
+      end
     end
-  end
-end
+  end,
+})
+
+lace.feather_and_fan = working.define("lace", {
+  name = "feather_and_fan",
+  doc = "feather and fan (Old Shale), a 4-row repeat: row 1 knit, row 2 purl (the face knit), row 3 *(k2tog) x3, "
+    .. "(yo, k1) x6, (k2tog) x3; rep from *, row 4 knit (the face purl, a ridge). A multiple of 18; rows a multiple "
+    .. "of 4 ends a repeat",
+  args = { rows_arg },
+  work = function(rows)
+    local problem = multiple_problem("lace.feather_and_fan", 18, 18)
+    if problem then return problem end
+    for _ = 1, rows do
+      local step = (chart_row() - 1) % 4 + 1
+      if step == 3 then
+        row "*(k2tog) x3, (yo, k1) x6, (k2tog) x3; rep from *"
+      else
+        plain_row(step ~= 4)
+      end
+    end
+  end,
+})
 
 return lace

@@ -35,7 +35,7 @@ Legend default_legend() {
   const auto table = stitch_table();
   for (std::size_t i = 0; i < table.size(); ++i) {
     const Worked w{static_cast<StitchId>(i), -1};
-    legend.set(std::string(table[i].symbol), w);
+    legend.set(std::string(words(static_cast<StitchId>(i)).symbol), w);
     // Names work as symbols too, as written ("C4F", "p2tog"); names with spaces cannot.
     legend.set(std::string(table[i].name), w);
   }

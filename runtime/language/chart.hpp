@@ -45,4 +45,10 @@ struct ChartError {
 // Rows bottom first (row 1 first). Blank lines are skipped.
 std::variant<std::vector<ChartRow>, ChartError> parse_chart(std::string_view text, const Legend& legend);
 
+// The pattern's stitch chart as `knitc chart` prints it: one line per course, top course
+// first, symbols from the default legend (a cable drawn across its width), each row's
+// number on the side it is read from (right for right-side rows, left for wrong-side
+// rows); yarn ids after each row when the pattern changes yarn.
+std::string chart_text(const Pattern& pattern);
+
 }  // namespace knitc::language

@@ -363,7 +363,7 @@ class Parser {
       fail("unknown stitch '" + written + "'" + (hints_ ? stitch_hint(written) : std::string()));
       return false;
     }
-    if (explicit_count && !stitch(*id).counted) {
+    if (explicit_count && !language::words(*id).counted) {
       fail(std::string(stitch(*id).name) + " takes no count ('" + written + "'); repeat it with commas or a group");
       return false;
     }

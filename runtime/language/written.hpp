@@ -20,6 +20,7 @@
 #include <variant>
 #include <vector>
 
+#include "language/words.hpp"
 #include "pattern.hpp"
 
 namespace knitc::language {

@@ -15,6 +15,7 @@
 
 #include "layout/layout.hpp"
 #include "runtime.hpp"
+#include "language/chart.hpp"
 #include "writers/writers.hpp"
 
 namespace {
@@ -168,7 +169,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!printable(w)) violated("a warning that is not printable: " + w);
     }
     const Pattern& p = result.pattern;
-    (void)writers::chart_text(p);
+    (void)language::chart_text(p);
     std::uint64_t loops = static_cast<std::uint64_t>(p.cast_on);
     for (const Course& c : p.courses) loops += c.ops.size();
     if (loops <= 20'000) {

@@ -1,16 +1,17 @@
 #include <algorithm>
 #include <string>
 
-#include "writers/writers.hpp"
+#include "language/chart.hpp"
 
-namespace knitc::writers {
+namespace knitc::language {
 
 namespace {
 
 // A stitch's cell text: its chart symbol, a cable's name drawn across its width
 // ("C4F----" spans 4 cells of "x " each, less the last space).
-std::string cell(const StitchDef& s) {
-  std::string text(s.symbol);
+std::string cell(StitchId id) {
+  const StitchDef& s = stitch(id);
+  std::string text(words(id).symbol);
   const int width = std::max(s.consumes, s.produces);
   if (s.family == StitchFamily::cable && width > 1) text.resize(std::max<std::size_t>(text.size(), 2 * width - 1), '-');
   return text;
@@ -29,7 +30,7 @@ std::string chart_text(const Pattern& pattern) {
   std::size_t widest = 0;
   for (std::size_t r = 0; r < rows; ++r) {
     std::string cells;
-    for (const Op& op : pattern.courses[r].ops) cells += (cells.empty() ? "" : " ") + cell(stitch(op.stitch));
+    for (const Op& op : pattern.courses[r].ops) cells += (cells.empty() ? "" : " ") + cell(op.stitch);
     widest = std::max(widest, cells.size());
     lines.push_back(std::move(cells));
   }
@@ -54,4 +55,4 @@ std::string chart_text(const Pattern& pattern) {
   return out;
 }
 
-}  // namespace knitc::writers
+}  // namespace knitc::language

@@ -1,0 +1,228 @@
+#include "language/words.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cctype>
+#include <deque>
+#include <map>
+#include <vector>
+
+namespace knitc::language {
+
+namespace {
+
+struct Entry {
+  std::string_view name;  // the stitch table's canonical name
+  StitchWords words;
+};
+
+// Every stitch the table declares by hand, in its order: {name, {aliases, symbol, Lua
+// name, counted, summary}}. The generated crosses' words follow from their facts
+// (cross_words below).
+constexpr Entry entries[] = {
+    {"k", {"knit", "|", "k", true,
+      "knit: a V on the face"}},
+    {"p", {"purl", ".", "p", true,
+      "purl: a bump on the face"}},
+    {"yo", {"yfwd|yfd|yon|yrn|yf", "O", "yo", true,
+      "yarn over: a new loop with no parent, an eyelet and one stitch more"}},
+    {"k2tog", {"k2 tog", "/", "k2tog", false,
+      "knit two together: one stitch less, leaning right"}},
+    {"ssk", {"skp|skpo|sl1-k1-psso|sl1 k1 psso|sl 1 k1 psso", "\\", "ssk", false,
+      "slip, slip, knit: one stitch less, leaning left"}},
+    {"p2tog", {"", "p2tog", "p2tog", false,
+      "purl two together: one stitch less; on a wrong-side row it shows as k2tog"}},
+    {"ssp", {"", "ssp", "ssp", false,
+      "slip, slip, purl: one stitch less; on a wrong-side row it shows as ssk"}},
+    {"k3tog", {"", "k3tog", "k3tog", false,
+      "knit three together: two stitches less, leaning right"}},
+    {"p3tog", {"", "p3tog", "p3tog", false,
+      "purl three together: two stitches less; on a wrong-side row it shows as k3tog"}},
+    {"cdd", {"s2kp|s2kpo|s2kp2|sl2-k1-p2sso|sl2 k1 p2sso|ctr dbl dec", "^", "cdd", false,
+      "central double decrease (slip 2 together, k1, pass the slipped stitches over): the centre stitch on top"}},
+    {"sk2p", {"sk2po|skpo2|sl1-k2tog-psso|sl1 k2tog psso|sl 1 k2tog psso", "sk2p", "sk2p", false,
+      "slip 1, k2tog, pass the slipped stitch over: two stitches less, leaning left"}},
+    {"sl wyib", {"sl|slip|sl wyb|sl k-wise|sl kwise|sl knitwise|sl p-wise|sl pwise|sl purlwise|sl p-wise wyib|sl k-wise wyib", "V", "sl", true,
+      "slip purlwise with the yarn in back: the old loop stretches up, the yarn floats behind it"}},
+    {"sl wyif", {"sl wyf|sl p-wise wyif|sl pwise wyif|sl purlwise wyif", "v", "sl_wyif", true,
+      "slip purlwise with the yarn in front: the float lies across the face"}},
+    {"tuck", {"", "U", "tuck", true,
+      "tuck: the yarn is caught on the needle and the old loop held, to be knitted off with it next row"}},
+    {"no stitch", {"ns", "x", "no_stitch", true,
+      "no stitch: a placeholder in charts where the stitch count changes"}},
+    {"C2F", {"1/1 LC|1/1 LSC|1/1 LSAC", "C2F", "C2F", false,
+      "1 over 1 cross: the right stitch crosses in front to the left"}},
+    {"C2B", {"1/1 RC|1/1 RSC|1/1 RSAC", "C2B", "C2B", false,
+      "1 over 1 cross: the right stitch crosses behind to the left"}},
+    {"C4F", {"2/2 LC", "C4F", "C4F", false,
+      "2 over 2 cable: the front pair moves left"}},
+    {"C4B", {"2/2 RC", "C4B", "C4B", false,
+      "2 over 2 cable: the front pair moves right"}},
+    {"C6F", {"3/3 LC", "C6F", "C6F", false,
+      "3 over 3 cable: the front three move left"}},
+    {"C6B", {"3/3 RC", "C6B", "C6B", false,
+      "3 over 3 cable: the front three move right"}},
+    {"C8F", {"4/4 LC", "C8F", "C8F", false,
+      "4 over 4 cable: the front four move left"}},
+    {"C8B", {"4/4 RC", "C8B", "C8B", false,
+      "4 over 4 cable: the front four move right"}},
+    {"T2F", {"1/1 LPC", "T2F", "T2F", false,
+      "twist: a knit stitch crosses left in front of a purl"}},
+    {"T2B", {"1/1 RPC", "T2B", "T2B", false,
+      "twist: a knit stitch crosses right in front of a purl"}},
+    {"T3F", {"2/1 LPC", "T3F", "T3F", false,
+      "twist: two knit stitches cross left in front of a purl"}},
+    {"T3B", {"2/1 RPC", "T3B", "T3B", false,
+      "twist: two knit stitches cross right in front of a purl"}},
+    {"T4F", {"2/2 LPC", "T4F", "T4F", false,
+      "twist: two knit stitches cross left in front of two purls"}},
+    {"T4B", {"2/2 RPC", "T4B", "T4B", false,
+      "twist: two knit stitches cross right in front of two purls"}},
+    {"k tbl", {"ktbl|k through back loop|k tw|k twisted", "k_tbl", "k_tbl", true,
+      "knit through the back loop: a twisted knit, its legs crossed at the foot"}},
+    {"p tbl", {"ptbl|p through back loop|p tw|p twisted", "p_tbl", "p_tbl", true,
+      "purl through the back loop: a twisted purl"}},
+    {"k below", {"k b|kb1|k-b1|k in row below|k in st below|k in stitch below", "k_below", "k_below", true,
+      "knit into the stitch below (brioche): the live loop drops and lies on the new one like a tuck"}},
+    {"p below", {"p b|pb1|p-b1|p in row below|p in st below|p in stitch below", "p_below", "p_below", true,
+      "purl into the stitch below (brioche): the live loop drops and lies on the new one like a tuck"}},
+    {"sssk", {"", "sssk", "sssk", false,
+      "slip, slip, slip, knit the three together: two stitches less, leaning left"}},
+    {"p2tog tbl", {"p2tog twisted|p2togtbl|p2tog-tbl", "p2tog_tbl", "p2tog_tbl", false,
+      "purl two together through the back loops: one stitch less; on a wrong-side row it shows as ssk"}},
+    {"k2tog tbl", {"k2togtbl|k2tog-tbl", "k2tog_tbl", "k2tog_tbl", false,
+      "knit two together through the back loops: one stitch less, leaning left, twisted"}},
+    {"m1", {"m", "m1", "m1", false,
+      "make one: the bar between two stitches lifted and knitted twisted, one stitch more and no hole"}},
+    {"m1l", {"m1 l|m1lf|m1 left", "m1l", "m1l", false,
+      "make one left: the bar lifted from the front, knitted through the back, leaning left"}},
+    {"m1r", {"m1 r|m1rb|m1 right", "m1r", "m1r", false,
+      "make one right: the bar lifted from the back, knitted through the front, leaning right"}},
+    {"m1p", {"m1 p|m1 purlwise|m1pw", "m1p", "m1p", false,
+      "make one purlwise: the bar lifted and purled twisted, one stitch more"}},
+    {"kfb", {"kf&b|k1fb|k1f&b|inc|k into front and back", "kfb", "kfb", false,
+      "knit into the front and back of one stitch: one stitch more, a bar at the second"}},
+    {"pfb", {"pf&b|p1fb|p1f&b", "pfb", "pfb", false,
+      "purl into the front and back of one stitch: one stitch more"}},
+    {"ctr dbl inc", {"cdi|central double increase", "cdi", "cdi", false,
+      "central double increase: three stitches worked out of one, the centre one on top"}},
+    {"k wrapping yarn twice", {"k wyt|k elongated|k double wrap", "k_wyt", "k_wyt", true,
+      "knit wrapping the yarn twice; the extra wrap is dropped on the next row: an elongated stitch"}},
+    {"p wrapping yarn twice", {"p wyt|p elongated|p double wrap", "p_wyt", "p_wyt", true,
+      "purl wrapping the yarn twice; the extra wrap is dropped on the next row: an elongated stitch"}},
+};
+
+// A generated cross: its notation is its name; its symbol the name without the space.
+StitchWords cross_words(const StitchDef& d) {
+  static std::deque<std::string> text;  // the generated words' storage, for the program's life
+  std::string symbol(d.name);
+  symbol.erase(std::remove(symbol.begin(), symbol.end(), ' '), symbol.end());
+  const Cable& c = d.cable;
+  const bool three = c.middle > 0;
+  const int n = three || c.front ? c.held : d.consumes - c.held;
+  const int m = d.consumes - n - c.middle;
+  std::string what = std::string(c.front ? "left" : "right") + (c.purl_background ? " purl" : "") +
+                     (d.twisted ? " twist" : " cross") + ": " + std::to_string(n) + (d.twisted ? " twisted" : "") +
+                     " over " + (three ? std::to_string(c.middle) + " and " + std::to_string(m) : std::to_string(m)) +
+                     ", the top " + (c.front ? "moving left" : "moving right");
+  if (c.purl_background) what += three ? ", the middle purled" : ", the one below purled";
+  StitchWords w;
+  w.symbol = text.emplace_back(std::move(symbol));
+  w.summary = text.emplace_back(std::move(what));
+  return w;
+}
+
+const std::vector<StitchWords>& all_words() {
+  static const std::vector<StitchWords> all = [] {
+    const auto table = stitch_table();
+    std::vector<StitchWords> v;
+    v.reserve(table.size());
+    std::size_t next = 0;  // entries are in table order
+    for (const StitchDef& d : table) {
+      if (next < std::size(entries) && entries[next].name == d.name) {
+        v.push_back(entries[next++].words);
+      } else {
+        assert(!cross_notation(d).empty() && cross_notation(d) == d.name && "a stitch without words");
+        v.push_back(cross_words(d));
+      }
+    }
+    assert(next == std::size(entries) && "words for a stitch the table does not have, or out of its order");
+    return v;
+  }();
+  return all;
+}
+
+// Every name and alias with its stitch, lower-cased.
+const std::vector<std::pair<std::string, StitchId>>& spellings() {
+  static const auto all = [] {
+    std::vector<std::pair<std::string, StitchId>> v;
+    for (std::size_t i = 0; i < stitch_table().size(); ++i) {
+      const auto id = static_cast<StitchId>(i);
+      for_each_spelling(id, [&](std::string_view w) { v.emplace_back(lower(w), id); });
+    }
+    return v;
+  }();
+  return all;
+}
+
+}  // namespace
+
+const StitchWords& words(StitchId id) {
+  assert(id < all_words().size());
+  return all_words()[id];
+}
+
+std::optional<StitchId> find_stitch(std::string_view word) {
+  // Several hundred spellings, looked up for every word of every row: a map, the first
+  // stitch in table order keeping a spelling two share.
+  static const auto by_spelling = [] {
+    std::map<std::string, StitchId, std::less<>> m;
+    for (const auto& [spelling, id] : spellings()) m.emplace(spelling, id);
+    return m;
+  }();
+  const auto it = by_spelling.find(lower(word));
+  if (it == by_spelling.end()) return std::nullopt;
+  return it->second;
+}
+
+int edit_distance(std::string_view a, std::string_view b) {
+  std::vector<int> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = static_cast<int>(j);
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    int diagonal = row[0];
+    row[0] = static_cast<int>(i);
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const int above = row[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string nearest_stitch_name(std::string_view word) {
+  // No spelling is near a word many times its length; its start is what the hint can use
+  // (and a megabyte of text must not cost a megabyte squared).
+  word = word.substr(0, 48);
+  std::string best;
+  int best_distance = 1 << 30;
+  for (const auto& [spelling, id] : spellings()) {
+    const auto gap = static_cast<int>(word.size() > spelling.size() ? word.size() - spelling.size() : spelling.size() - word.size());
+    if (gap >= best_distance) continue;  // the distance is at least the difference in length
+    const int d = edit_distance(word, spelling);
+    if (d < best_distance) {  // first in table order wins ties: deterministic
+      best_distance = d;
+      best = spelling == lower(stitch(id).name) ? std::string(stitch(id).name) : spelling;
+    }
+  }
+  return best;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
+  return out;
+}
+
+}  // namespace knitc::language
