@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "stitches/stitches.hpp"
+#include "yarn/size.hpp"
 
 namespace knitc {
 
@@ -35,13 +36,14 @@ enum class Section {
 
 struct Yarn {
   std::string id;         // the name the script gives it, e.g. "A"
-  double diameter = 1.0;  // mm
+  double diameter = 1.0;  // mm: the free diameter, at which the tube is drawn
   std::string color;      // CSS hex, "#rrggbb"
   Section section = Section::circle;
   double aspect = 1.0;    // ellipse: minor / major, in (0, 1]
   int plies = 1;          // plied: 2 to 6
   double twist = 0.0;     // plied: turns per 10 cm
   bool z_twist = false;   // plied: Z twist (plies slant like the middle of a Z), else S
+  double core_diameter = 1.0 / yarn::free_per_core;  // mm: the compact core, < diameter
   bool operator==(const Yarn&) const = default;
 };
 

@@ -12,50 +12,22 @@ namespace knitc::runtime {
 
 namespace {
 
-// Standard yarn weights (Craft Yarn Council) to a round diameter: 0.85 x 25.4 / WPI at
-// the middle of each weight's wraps-per-inch range. Wrapping flattens the yarn, so WPI
-// overstates the round diameter; 0.85 is the flattening assumed.
-struct Weight {
-  const char* name;
-  const char* aliases;  // '|'-separated
-  double wpi;
-};
-constexpr std::array<Weight, 8> weights{{
-    {"lace", "", 35.0},
-    {"super fine", "fingering|sock", 22.0},
-    {"fine", "sport", 15.0},
-    {"light", "dk", 13.0},
-    {"medium", "worsted|aran", 10.5},
-    {"bulky", "chunky", 7.5},
-    {"super bulky", "", 5.5},
-    {"jumbo", "", 4.0},
-}};
-constexpr double wpi_flattening = 0.85;
-
-std::optional<double> weight_diameter(const std::string& name) {
-  const std::string key = language::lower(name);
-  for (const Weight& w : weights) {
-    std::string spellings = std::string(w.name) + "|" + w.aliases;
-    std::size_t start = 0;
-    while (start <= spellings.size()) {
-      const std::size_t bar = std::min(spellings.find('|', start), spellings.size());
-      if (spellings.substr(start, bar - start) == key) return wpi_flattening * 25.4 / w.wpi;
-      start = bar + 1;
-    }
-  }
-  return std::nullopt;
-}
-
 std::string weight_names() {
   std::string out;
-  for (const Weight& w : weights) {
+  for (const yarn::Weight& w : yarn::weights()) {
     out += (out.empty() ? "" : ", ") + std::string(w.name);
-    if (*w.aliases != '\0') {
-      std::string a = w.aliases;
+    if (!w.aliases.empty()) {
+      std::string a(w.aliases);
       std::replace(a.begin(), a.end(), '|', '/');
       out += " (" + a + ")";
     }
   }
+  return out;
+}
+
+std::string fibre_names() {
+  std::string out;
+  for (const yarn::Fibre& f : yarn::fibres()) out += (out.empty() ? "" : ", ") + std::string(f.name);
   return out;
 }
 
@@ -114,6 +86,53 @@ void read_section(lua_State* L, int t, const std::string& name, Yarn& y) {
     fail(L, name + ".plies, twist and direction are for section = \"plied\"");
 }
 
+// The yarn's two diameters (compiler/yarn/size.hpp) from one of diameter, weight, wpi and
+// tex, and a core_diameter when the designer knows it.
+void read_size(lua_State* L, int t, const std::string& name, Yarn& y) {
+  const auto diameter = number_field(L, t, name, "diameter");
+  const auto weight = string_field(L, t, name, "weight");
+  const auto wpi = number_field(L, t, name, "wpi");
+  const auto tex = number_field(L, t, name, "tex");
+  const auto core = number_field(L, t, name, "core_diameter");
+  const auto fibre_name = string_field(L, t, name, "fibre");
+  std::vector<std::string> given;
+  if (diameter) given.emplace_back("diameter");
+  if (weight) given.emplace_back("weight");
+  if (wpi) given.emplace_back("wpi");
+  if (tex) given.emplace_back("tex");
+  if (given.size() > 1) {
+    std::string both;
+    for (std::size_t i = 0; i < given.size(); ++i) both += (i == 0 ? "" : i + 1 == given.size() ? " and " : ", ") + given[i];
+    fail(L, name + " gives " + (given.size() == 2 ? "both " : "") + both + "; give one");
+  }
+  const yarn::Fibre* fibre = yarn::find_fibre(language::lower(fibre_name.value_or(std::string(yarn::default_fibre))));
+  if (fibre == nullptr) fail(L, name + ".fibre is \"" + *fibre_name + "\"; known fibres: " + fibre_names());
+  yarn::Size size;
+  if (weight) {
+    const yarn::Weight* w = yarn::find_weight(language::lower(*weight));
+    if (w == nullptr) fail(L, name + ".weight is \"" + *weight + "\"; known weights: " + weight_names());
+    size = yarn::from_wpi(w->wpi);
+  } else if (wpi) {
+    size = yarn::from_wpi(in_range(L, *wpi, name + ".wpi", field("yarn", "wpi")));
+  } else if (tex) {
+    size = yarn::from_tex(in_range(L, *tex, name + ".tex", field("yarn", "tex")), fibre->density);
+  } else if (diameter) {
+    size = yarn::from_free_diameter(in_range(L, *diameter, name + ".diameter", field("yarn", "diameter")));
+  } else if (core) {
+    size = yarn::from_core_diameter(in_range(L, *core, name + ".core_diameter", field("yarn", "core_diameter")));
+  } else {
+    fail(L, name + " needs a size: a diameter in mm, a weight, wpi or tex, e.g. diameter = 1.0 or weight = \"dk\"");
+  }
+  if (core) {
+    size.core_diameter = in_range(L, *core, name + ".core_diameter", field("yarn", "core_diameter"));
+    if (size.core_diameter >= size.free_diameter)
+      fail(L, name + ".core_diameter is " + show(size.core_diameter) + " mm, not less than the free diameter " +
+                  show(size.free_diameter) + " mm; the core is the compact middle of the yarn");
+  }
+  y.diameter = size.free_diameter;
+  y.core_diameter = size.core_diameter;
+}
+
 void read_yarns(lua_State* L, int index, Pattern& p) {
   lua_getfield(L, index, "yarns");
   if (!lua_istable(L, -1))
@@ -129,18 +148,7 @@ void read_yarns(lua_State* L, int index, Pattern& p) {
     only_known_keys(L, t, name, "yarn");
     Yarn y;
     y.id = id;
-    const auto d = number_field(L, t, name, "diameter");
-    const auto weight = string_field(L, t, name, "weight");
-    if (d && weight) fail(L, name + " gives both diameter and weight; give one");
-    if (weight) {
-      const auto wd = weight_diameter(*weight);
-      if (!wd) fail(L, name + ".weight is \"" + *weight + "\"; known weights: " + weight_names());
-      y.diameter = *wd;
-    } else if (d) {
-      y.diameter = in_range(L, *d, name + ".diameter", field("yarn", "diameter"));
-    } else {
-      fail(L, name + " needs a diameter in mm or a weight, e.g. diameter = 1.0 or weight = \"dk\"");
-    }
+    read_size(L, t, name, y);
     const std::string color = string_field(L, t, name, "color").value_or(std::string(field("yarn", "color").fallback));
     const auto hex = normal_hex_color(color);
     if (!hex) fail(L, name + ".color is \"" + color + "\"; give a CSS hex colour such as \"#d9c8a9\"");
@@ -199,14 +207,21 @@ void read_gauge(lua_State* L, int index, Pattern& p) {
 }  // namespace
 
 std::string yarn_weight_markdown() {
-  std::string out = "| weight | also | wraps per inch | diameter (mm) |\n|---|---|---|---|\n";
-  for (const Weight& w : weights) {
-    std::string a = w.aliases;
+  std::string out = "| weight | also | wraps per inch | free diameter (mm) | core diameter (mm) |\n|---|---|---|---|---|\n";
+  for (const yarn::Weight& w : yarn::weights()) {
+    std::string a(w.aliases);
     std::replace(a.begin(), a.end(), '|', ',');
-    char d[32];
-    std::snprintf(d, sizeof d, "%.2f", wpi_flattening * 25.4 / w.wpi);
+    const yarn::Size size = yarn::from_wpi(w.wpi);
+    char d[64];
+    std::snprintf(d, sizeof d, "%.2f | %.2f", size.free_diameter, size.core_diameter);
     out += "| " + std::string(w.name) + " | " + a + " | " + show(w.wpi) + " | " + d + " |\n";
   }
+  return out;
+}
+
+std::string yarn_fibre_markdown() {
+  std::string out = "| fibre | density (g/cm³) |\n|---|---|\n";
+  for (const yarn::Fibre& f : yarn::fibres()) out += "| " + std::string(f.name) + " | " + show(f.density) + " |\n";
   return out;
 }
 

@@ -88,9 +88,16 @@ std::string language_reference() {
     if (e.symbol == language::words(e.worked.stitch).symbol)
       md += "| " + code(e.symbol) + " | " + std::string(stitch(e.worked.stitch).name) + " |\n";
   }
-  md += "\n## Yarn weights\n\n`weight = name` gives the yarn a round diameter of 0.85 x 25.4 / WPI, at the middle "
-        "of the weight's wraps-per-inch range: wrapping flattens the yarn, so WPI alone overstates its round diameter.\n\n" +
-        yarn_weight_markdown() +
+  md += "\n## Yarn sizes\n\nA yarn has two diameters: the free diameter, its loose width, at which it is drawn, and "
+        "the core diameter, the compact middle no squeeze reduces (docs/yarn.md). Give one of `diameter` (the free "
+        "diameter), `weight`, `wpi` or `tex`, and `core_diameter` if you know it. `wpi = n` gives a free diameter of " +
+        show(yarn::wraps_flattening) + " x 25.4 / n (wrapping flattens the yarn, so 25.4 / WPI overstates its round width) and a core of " +
+        "25.4 / (" + show(yarn::wraps_per_core) + " n) (wraps packed to refusal are about twice as many); `weight = name` the same at the middle of "
+        "the weight's range. `tex = t` (grams per km) gives the core that holds the fibre at " + show(yarn::core_packing) +
+        " of its section (the fibre's density below; wool unless `fibre` says) and a free diameter " +
+        show(yarn::free_per_core) + " times it. A free diameter alone gives a core 1 / " + show(yarn::free_per_core) +
+        " of it.\n\n" +
+        yarn_weight_markdown() + "\n" + yarn_fibre_markdown() +
         "\n## Written instructions\n\n"
         "```\n"
         "k2, p2                                   repeats across the row until the stitches are used\n"

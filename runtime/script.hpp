@@ -68,6 +68,7 @@ int pattern_verb(lua_State* L);
 int require_verb(lua_State* L);
 // The yarn weight table of the reference docs.
 std::string yarn_weight_markdown();
+std::string yarn_fibre_markdown();
 // The library's modules and functions, as each module declares them (working.declare),
 // for the reference docs.
 std::string library_markdown();

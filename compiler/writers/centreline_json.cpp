@@ -25,16 +25,21 @@ std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_p
   doc["loop_model"] = model == yarn_paths::LoopModel::paper ? "paper" : "smooth";
 
   json yarns = json::array();
+  std::vector<std::size_t> first_point(fabric.pieces.size());  // each piece's first index in its yarn's points
   for (std::size_t y = 0; y < pattern.yarns.size(); ++y) {
     json points = json::array(), pieces = json::array();
-    for (const CurvePiece& piece : fabric.pieces) {
+    for (std::size_t i = 0; i < fabric.pieces.size(); ++i) {
+      const CurvePiece& piece = fabric.pieces[i];
       if (piece.path.yarn != static_cast<int>(y)) continue;
+      first_point[i] = points.size();
       pieces.push_back(json::array({points.size(), piece.frames.size()}));
       for (const auto& p : piece.frames.origin) points.push_back(xyz(p));
     }
     if (pieces.empty()) continue;
     yarns.push_back({{"id", pattern.yarns[y].id},
                      {"color", pattern.yarns[y].color},
+                     {"free_diameter", micro(pattern.yarns[y].diameter)},
+                     {"core_diameter", micro(pattern.yarns[y].core_diameter)},
                      {"points", std::move(points)},
                      {"pieces", std::move(pieces)}});
   }
@@ -42,7 +47,8 @@ std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_p
 
   // Loops in layout order, each with the samples of the piece that owns them.
   std::vector<json> loops(fabric.layout.loops.size());
-  for (const CurvePiece& piece : fabric.pieces) {
+  for (std::size_t i = 0; i < fabric.pieces.size(); ++i) {
+    const CurvePiece& piece = fabric.pieces[i];
     for (std::size_t j = 0; j < piece.path.loops.size(); ++j) {
       const int index = piece.path.loops[j];
       const layout::Loop& loop = fabric.layout.loops[index];
@@ -59,7 +65,10 @@ std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_p
                       {"stitch", std::string(stitch(loop.stitch).name)},
                       {"yarn", pattern.yarns[loop.yarn].id},
                       {"data_points", std::move(data)},
-                      {"samples", std::move(samples)}};
+                      {"samples", std::move(samples)},
+                      // The same samples as a range of its yarn's points: [first, last].
+                      {"points", json::array({first_point[i] + piece.loop_samples[j].first,
+                                              first_point[i] + piece.loop_samples[j].second})}};
     }
   }
   doc["loops"] = std::move(loops);
