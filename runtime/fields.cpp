@@ -49,10 +49,11 @@ constexpr Field fields[] = {
 
     number("yarn", "diameter", 0, 30, " mm", "the yarn's free diameter, as drawn (or give weight, wpi or tex)"),
     text("yarn", "weight", "", "a standard weight name (the table below): its diameters"),
-    number("yarn", "wpi", 0, 100, " wraps per inch", "wraps per inch, as knitters measure them: the diameters"),
-    number("yarn", "tex", 0, 100000, " tex", "grams per kilometre: the core's diameter, from the fibre's density"),
+    // wpi, tex and core_diameter bounded so that the free diameter stays within diameter's.
+    number("yarn", "wpi", 1, 100, " wraps per inch", "wraps per inch, as knitters measure them: the diameters"),
+    number("yarn", "tex", 0, 50000, " tex", "grams per kilometre: the core's diameter, from the fibre's density"),
     text("yarn", "fibre", "wool", "the fibre (the table below), whose density a tex yarn's core follows"),
-    number("yarn", "core_diameter", 0, 30, " mm", "the compact core's diameter, less than the free diameter",
+    number("yarn", "core_diameter", 0, 15, " mm", "the compact core's diameter, less than the free diameter",
            std::nullopt, "the free diameter / 1.91"),
     text("yarn", "color", "#d9c8a9", "a CSS hex colour, \"#rrggbb\" or \"#rgb\""),
     choice("yarn", "section", "circle|ellipse|plied", "circle",

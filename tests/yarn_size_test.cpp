@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compile.hpp"
+#include "fields.hpp"
 #include "support.hpp"
 #include "writers/writers.hpp"
 #include "yarn/size.hpp"
@@ -46,6 +47,16 @@ TEST(YarnSize, TexAndWrapsAgreeOnTypicalWools) {
   EXPECT_NEAR(yarn::from_tex(2000.0, wool).core_diameter, 2.0 * yarn::from_tex(500.0, wool).core_diameter, 1e-9);
   EXPECT_LT(yarn::from_tex(500.0, yarn::find_fibre("cotton")->density).core_diameter,
             yarn::from_tex(500.0, wool).core_diameter);
+}
+
+// The limits of wpi, tex and core_diameter keep every free diameter within diameter's
+// own limit, for every fibre.
+TEST(YarnSize, EveryWayStaysWithinTheDiametersLimit) {
+  const double most = runtime::field("yarn", "diameter").hi;
+  EXPECT_LE(yarn::from_wpi(runtime::field("yarn", "wpi").lo).free_diameter, most);
+  EXPECT_LE(yarn::from_core_diameter(runtime::field("yarn", "core_diameter").hi).free_diameter, most);
+  for (const yarn::Fibre& f : yarn::fibres())
+    EXPECT_LE(yarn::from_tex(runtime::field("yarn", "tex").hi, f.density).free_diameter, most) << f.name;
 }
 
 TEST(YarnSize, ThePatternLanguageReadsEveryWay) {
