@@ -159,7 +159,8 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
              hi.z);
   const auto m = knitc::measure::measure(pattern, fabric.layout, fabric.pieces);
   for (std::size_t y = 0; y < pattern.yarns.size(); ++y)
-    fmt::print(stderr, "yarn {:<7} {:.1f} mm\n", pattern.yarns[y].id, m.yarn_length[y]);
+    fmt::print(stderr, "yarn {:<7} {:.1f} mm long; free diameter {:.3f} mm, core {:.3f} mm\n", pattern.yarns[y].id,
+               m.yarn_length[y], pattern.yarns[y].diameter, pattern.yarns[y].core_diameter);
   fmt::print(stderr, "penetration {:.3f} d (deepest overlap of two yarn tubes; the seed paper's loop overlaps by about 0.85 d)\n",
              m.deepest_penetration);
   fmt::print(stderr, "tightest bend {:.3f} tube radii (smallest radius of curvature over the tube's radius)\n", m.tightest_bend);
