@@ -180,13 +180,20 @@ std::optional<StitchId> wrong_side_face(StitchId id) {
   return stitch_id(ws);
 }
 
+CrossCounts cross_counts(const StitchDef& s) {
+  assert(s.family == F::cable);
+  const Cable& c = s.cable;
+  // A left cross (and every n/c/n) holds the n on top; a right cross holds the m under.
+  const int over = c.middle > 0 || c.front ? c.held : s.consumes - c.held;
+  return {over, c.middle, s.consumes - over - c.middle};
+}
+
 std::string cross_notation(const StitchDef& s) {
   if (s.family != F::cable) return "";
   const Cable& c = s.cable;
-  // n on top over m (n/c/n: the outer n change places around the middle c).
-  const int n = c.middle > 0 || c.front ? c.held : s.consumes - c.held;
-  const int m = s.consumes - n - c.middle;
-  std::string out = std::to_string(n) + "/" + (c.middle > 0 ? std::to_string(c.middle) + "/" : "") + std::to_string(m) + " ";
+  const CrossCounts n = cross_counts(s);
+  std::string out = std::to_string(n.over) + "/" + (n.middle > 0 ? std::to_string(n.middle) + "/" : "") +
+                    std::to_string(n.under) + " ";
   out += c.front ? "L" : "R";
   if (c.purl_background) out += "P";
   out += s.twisted ? "T" : "C";

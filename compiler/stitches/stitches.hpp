@@ -62,6 +62,13 @@ StitchId stitch_id(std::string_view canonical_name);                    // asser
 bool purled(const StitchDef& s);
 // The face-view stitch for `id` worked on a wrong-side row, if it has one.
 std::optional<StitchId> wrong_side_face(StitchId id);
+// A cross as the Stitch Maps notation counts it: `over` stitches on top cross `under`
+// stitches (n/m), or the outer `over` on each side change places around `middle` (n/c/n).
+struct CrossCounts {
+  int over = 0, middle = 0, under = 0;
+};
+// For the cable family; asserts s is a cable.
+CrossCounts cross_counts(const StitchDef& s);
 // The cable family's crosses in the Stitch Maps notation ("2/2 LC", "2/1/2 RPC"): the
 // name a cross's facts give it. Empty for other stitches.
 std::string cross_notation(const StitchDef& s);

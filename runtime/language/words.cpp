@@ -118,12 +118,11 @@ StitchWords cross_words(const StitchDef& d) {
   std::string symbol(d.name);
   symbol.erase(std::remove(symbol.begin(), symbol.end(), ' '), symbol.end());
   const Cable& c = d.cable;
-  const bool three = c.middle > 0;
-  const int n = three || c.front ? c.held : d.consumes - c.held;
-  const int m = d.consumes - n - c.middle;
+  const CrossCounts n = cross_counts(d);
+  const bool three = n.middle > 0;
   std::string what = std::string(c.front ? "left" : "right") + (c.purl_background ? " purl" : "") +
-                     (d.twisted ? " twist" : " cross") + ": " + std::to_string(n) + (d.twisted ? " twisted" : "") +
-                     " over " + (three ? std::to_string(c.middle) + " and " + std::to_string(m) : std::to_string(m)) +
+                     (d.twisted ? " twist" : " cross") + ": " + std::to_string(n.over) + (d.twisted ? " twisted" : "") +
+                     " over " + (three ? std::to_string(n.middle) + " and " + std::to_string(n.under) : std::to_string(n.under)) +
                      ", the top " + (c.front ? "moving left" : "moving right");
   if (c.purl_background) what += three ? ", the middle purled" : ", the one below purled";
   StitchWords w;
