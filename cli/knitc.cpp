@@ -163,6 +163,8 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
                m.yarn_length[y], pattern.yarns[y].diameter, pattern.yarns[y].core_diameter);
   fmt::print(stderr, "penetration {:.3f} d (deepest overlap of two yarn tubes; the seed paper's loop overlaps by about 0.85 d)\n",
              m.deepest_penetration);
+  fmt::print(stderr, "cores       {:.3f} core d (deepest overlap of two yarn cores, which never compress)\n",
+             m.deepest_core_penetration);
   fmt::print(stderr, "tightest bend {:.3f} tube radii (smallest radius of curvature over the tube's radius)\n", m.tightest_bend);
   fmt::print(stderr, "frame turn  {:.1f} deg (largest between consecutive sweep frames)\n", m.largest_frame_turn);
   if (const auto shape = knitc::measure::loop_shape(fabric.layout, fabric.pieces); shape.loops > 0)
@@ -170,8 +172,9 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
                shape.loop_length, shape.wale_spacing, shape.course_spacing, shape.kc, shape.kw, shape.kc / shape.kw, shape.loops);
   if (fabric.relaxed) {
     const auto& r = fabric.relaxation;
-    fmt::print(stderr, "relaxation  {} iterations, {:.2f} s; capsule overlap {:.3f} d before, {:.3f} d after; lengths changed <= {:.2f}%\n",
-               r.iterations, relax_seconds, r.start_overlap, r.end_overlap, 100.0 * r.length_change);
+    fmt::print(stderr, "relaxation  {} iterations, {:.2f} s; cores overlap {:.3f} core d before, {:.3f} after; lengths changed <= {:.2f}%; "
+               "pressed shells squeezed {:.0f}% on average\n",
+               r.iterations, relax_seconds, r.start_overlap, r.end_overlap, 100.0 * r.length_change, 100.0 * r.compression);
   } else {
     fmt::print(stderr, "relaxation  off\n");
   }

@@ -93,11 +93,15 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
 
   if (options.relax) {
     report(options, "relax", 0.0);
-    std::vector<double> diameter;
-    for (const Yarn& y : pattern.yarns) diameter.push_back(y.diameter);
+    std::vector<yarn::Size> sizes;
+    std::vector<double> core;
+    for (const Yarn& y : pattern.yarns) {
+      sizes.push_back({y.diameter, y.core_diameter});
+      core.push_back(y.core_diameter);
+    }
     relax::Options ro = options.relaxation;
     ro.threads = options.threads;
-    auto relaxed = relax::relax(fabric.layout, relax::refine(std::move(paths), diameter, ro.spacing), diameter, ro);
+    auto relaxed = relax::relax(fabric.layout, relax::refine(std::move(paths), core, ro.spacing), sizes, ro);
     paths = std::move(relaxed.pieces);
     fabric.relaxed = true;
     fabric.relaxation = relaxed.stats;

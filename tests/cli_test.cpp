@@ -235,7 +235,7 @@ TEST(Cli, RelaxOnClearsTheOverlapAndSaysSo) {
                                      " --relax on --edges held --stats");
   ASSERT_EQ(stats.exit_code, 0) << stats.err;
   EXPECT_NE(stats.err.find("relaxation  "), std::string::npos);
-  EXPECT_NE(stats.err.find(" s; capsule overlap"), std::string::npos) << stats.err;  // the time, in --stats only
+  EXPECT_NE(stats.err.find(" s; cores overlap"), std::string::npos) << stats.err;  // the time, in --stats only
   EXPECT_NE(stats.err.find("loop shape  l "), std::string::npos);
   // Each yarn's two diameters: the free one drawn, the core 1/1.91 of it when not given.
   const double free = figure(stats.err, "free diameter "), core = figure(stats.err, " mm, core ");

@@ -18,7 +18,8 @@ namespace {
 struct Point {
   glm::dvec3 at;
   double along;  // mm from the piece's start
-  double radius;
+  double radius;  // mm: the free radius
+  double core;    // mm: the core radius
   std::uint32_t piece;
 };
 
@@ -27,7 +28,7 @@ std::vector<Point> centreline_points(const Pattern& pattern, std::span<const cur
   std::vector<Point> points;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const curves::CurvePiece& p = pieces[i];
-    const double d = pattern.yarns[p.path.yarn].diameter;
+    const double d = pattern.yarns[p.path.yarn].diameter, core = 0.5 * pattern.yarns[p.path.yarn].core_diameter;
     const auto& o = p.frames.origin;
     for (std::size_t s = 0; s < o.size(); ++s) {
       if (s > 0) {
@@ -36,23 +37,28 @@ std::vector<Point> centreline_points(const Pattern& pattern, std::span<const cur
         for (int k = 1; k < n; ++k) {
           const double t = static_cast<double>(k) / n;
           points.push_back({o[s - 1] + t * (o[s] - o[s - 1]), p.arc_length[s - 1] + t * (p.arc_length[s] - p.arc_length[s - 1]),
-                            0.5 * d, static_cast<std::uint32_t>(i)});
+                            0.5 * d, core, static_cast<std::uint32_t>(i)});
         }
       }
-      points.push_back({o[s], p.arc_length[s], 0.5 * d, static_cast<std::uint32_t>(i)});
+      points.push_back({o[s], p.arc_length[s], 0.5 * d, core, static_cast<std::uint32_t>(i)});
     }
   }
   return points;
 }
 
-// Cells one diameter (`cell`, the thickest yarn's) wide; overlaps per that diameter.
-double deepest_penetration(const std::vector<Point>& points, double cell) {
-  if (points.empty()) return 0.0;
+// Cells one diameter (`cell`, the thickest yarn's) wide; overlaps per that diameter, of
+// the free radii and of the cores (per `thickest_core`). Pairs of one piece closer than
+// two free diameters along it are one stretch of yarn, not a contact.
+struct Penetration {
+  double free = 0.0, core = 0.0;
+};
+Penetration deepest_penetration(const std::vector<Point>& points, double cell, double thickest_core) {
+  if (points.empty()) return {};
   spatial::Columns grid(cell);
   grid.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) grid.add(grid.cell_of(points[i].at), static_cast<std::uint32_t>(i));
   grid.index();
-  double deepest = 0.0;
+  Penetration deepest;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point& a = points[i];
     grid.near(grid.cell_of(a.at), [&](const spatial::Columns::Entry& e) {
@@ -61,7 +67,8 @@ double deepest_penetration(const std::vector<Point>& points, double cell) {
       const double reach = a.radius + b.radius;
       if (a.piece == b.piece && std::abs(a.along - b.along) <= 2.0 * reach) return;
       const double gap = glm::distance(a.at, b.at);
-      if (gap < reach) deepest = std::max(deepest, (reach - gap) / cell);
+      if (gap < reach) deepest.free = std::max(deepest.free, (reach - gap) / cell);
+      if (gap < a.core + b.core) deepest.core = std::max(deepest.core, (a.core + b.core - gap) / thickest_core);
     });
   }
   return deepest;
@@ -74,8 +81,11 @@ FabricMeasures measure(const Pattern& pattern, const layout::Layout& layout, std
   m.loops = layout.loops.size();
   m.pieces = pieces.size();
   m.yarn_length.assign(pattern.yarns.size(), 0.0);
-  double thickest = 0.0;
-  for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
+  double thickest = 0.0, thickest_core = 0.0;
+  for (const Yarn& y : pattern.yarns) {
+    thickest = std::max(thickest, y.diameter);
+    thickest_core = std::max(thickest_core, y.core_diameter);
+  }
   m.tightest_bend = std::numeric_limits<double>::infinity();
   for (const curves::CurvePiece& p : pieces) {
     if (!p.arc_length.empty()) m.yarn_length[p.path.yarn] += p.arc_length.back();
@@ -92,7 +102,11 @@ FabricMeasures measure(const Pattern& pattern, const layout::Layout& layout, std
   }
   // Distances are compared against each pair's radii; the overlap is reported per
   // diameter of the thickest yarn (one yarn in most fabrics).
-  if (thickest > 0.0) m.deepest_penetration = deepest_penetration(centreline_points(pattern, pieces), thickest);
+  if (thickest > 0.0 && thickest_core > 0.0) {
+    const Penetration p = deepest_penetration(centreline_points(pattern, pieces), thickest, thickest_core);
+    m.deepest_penetration = p.free;
+    m.deepest_core_penetration = p.core;
+  }
   return m;
 }
 
@@ -100,12 +114,16 @@ LoopShape loop_shape(const layout::Layout& layout, std::span<const curves::Curve
   // Each loop's centre and length, from the piece that owns it.
   std::vector<glm::dvec3> centre(layout.loops.size(), glm::dvec3(0.0));
   std::vector<double> length(layout.loops.size(), -1.0);
+  std::vector<glm::dvec2> depth(layout.loops.size(), glm::dvec2(1e300, -1e300));  // z from, to
   for (const curves::CurvePiece& p : pieces) {
     for (std::size_t j = 0; j < p.path.loops.size() && j < p.loop_samples.size(); ++j) {
       const auto [first, last] = p.loop_samples[j];
       glm::dvec3 sum(0.0);
-      for (std::size_t s = first; s <= last; ++s) sum += p.frames.origin[s];
       const auto loop = static_cast<std::size_t>(p.path.loops[j]);
+      for (std::size_t s = first; s <= last; ++s) {
+        sum += p.frames.origin[s];
+        depth[loop] = glm::dvec2(std::min(depth[loop].x, p.frames.origin[s].z), std::max(depth[loop].y, p.frames.origin[s].z));
+      }
       centre[loop] = sum / static_cast<double>(last - first + 1);
       length[loop] = p.arc_length[last] - p.arc_length[first];
     }
@@ -122,7 +140,8 @@ LoopShape loop_shape(const layout::Layout& layout, std::span<const curves::Curve
     return it != last && it->wale == wale ? static_cast<long>(it - layout.loops.begin()) : -1;
   };
   LoopShape shape;
-  double wales = 0.0, courses = 0.0;
+  double wales = 0.0, courses = 0.0, across = 0.0, up_pitch = 0.0;
+  double z_from = 1e300, z_to = -1e300;
   std::size_t wale_pairs = 0, course_pairs = 0;
   for (std::size_t i = 0; i < layout.loops.size(); ++i) {
     const auto& l = layout.loops[i];
@@ -133,14 +152,21 @@ LoopShape loop_shape(const layout::Layout& layout, std::span<const curves::Curve
     ++shape.loops;
     shape.loop_length += length[i];
     wales += glm::distance(centre[i], centre[static_cast<std::size_t>(right)]);
+    across += std::abs(centre[static_cast<std::size_t>(right)].x - centre[i].x);
     ++wale_pairs;
     courses += glm::distance(centre[i], centre[static_cast<std::size_t>(up)]);
+    up_pitch += std::abs(centre[static_cast<std::size_t>(up)].y - centre[i].y);
+    z_from = std::min(z_from, depth[i].x);
+    z_to = std::max(z_to, depth[i].y);
     ++course_pairs;
   }
   if (shape.loops == 0) return shape;
   shape.loop_length /= static_cast<double>(shape.loops);
   shape.wale_spacing = wales / static_cast<double>(wale_pairs);
   shape.course_spacing = courses / static_cast<double>(course_pairs);
+  shape.wale_pitch = across / static_cast<double>(wale_pairs);
+  shape.course_pitch = up_pitch / static_cast<double>(course_pairs);
+  shape.depth = z_to - z_from;
   shape.kc = shape.loop_length / shape.course_spacing;
   shape.kw = shape.loop_length / shape.wale_spacing;
   return shape;

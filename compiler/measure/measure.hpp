@@ -21,6 +21,10 @@ struct FabricMeasures {
   // pieces, or of one piece more than two diameters apart along it. The centrelines are
   // taken at the sweep's samples, filled in to a quarter diameter apart. 0: no overlap.
   double deepest_penetration = 0.0;
+  // The same for the yarns' compact cores (Yarn::core_diameter): the deepest
+  // (c_a + c_b - distance) of the core radii, over the thickest core diameter. The shells
+  // between core and free surface compress (docs/yarn.md); the cores must not meet.
+  double deepest_core_penetration = 0.0;
   // The smallest radius of curvature of any centreline, over its tube's radius (for a
   // flattened or plied yarn, half its width): below 1 the tube folds on itself.
   // Infinite for centrelines that are straight throughout.
@@ -42,6 +46,13 @@ struct LoopShape {
   std::size_t loops = 0;  // inner loops measured
   double loop_length = 0.0, wale_spacing = 0.0, course_spacing = 0.0;  // mm, means
   double kc = 0.0, kw = 0.0;
+  // Flat work, in the fabric's plane: the mean distance across (x) between neighbouring
+  // loops' centres, and up (y); a rib's purl wale recessed behind its knit neighbours is
+  // close across though far in depth. mm.
+  double wale_pitch = 0.0, course_pitch = 0.0;
+  // The depth (z) the inner loops' centrelines span, mm: the fabric's thickness less a
+  // yarn's diameter.
+  double depth = 0.0;
 };
 LoopShape loop_shape(const layout::Layout& layout, std::span<const curves::CurvePiece> pieces);
 

@@ -37,12 +37,13 @@ std::vector<yarn_paths::Piece> refine(std::vector<yarn_paths::Piece> pieces, con
 }
 
 Chains chains_of(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& pieces,
-                 const std::vector<double>& diameter, Boundary boundary) {
+                 const std::vector<yarn::Size>& sizes, Boundary boundary) {
   Chains c;
   std::size_t total = 0;
   for (const auto& p : pieces) total += p.data_points.size();
   c.pos.reserve(total);
   c.radius.reserve(total);
+  c.shell.reserve(total);
   c.along.reserve(total);
   c.inv_mass.reserve(total);
   c.piece.reserve(total);
@@ -52,8 +53,9 @@ Chains chains_of(const layout::Layout& layout, const std::vector<yarn_paths::Pie
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const auto& p = pieces[i];
     c.first.push_back(c.pos.size());
-    const double d = diameter[static_cast<std::size_t>(p.yarn)];
-    c.thickest = std::max(c.thickest, d);
+    const yarn::Size& size = sizes[static_cast<std::size_t>(p.yarn)];
+    c.thickest = std::max(c.thickest, size.free_diameter);
+    c.thickest_core = std::max(c.thickest_core, size.core_diameter);
     std::vector<std::int8_t> mark(p.data_points.size(), 0);
     for (std::size_t j = 0; j < p.loops.size(); ++j) {
       const auto& loop = layout.loops[static_cast<std::size_t>(p.loops[j])];
@@ -64,7 +66,8 @@ Chains chains_of(const layout::Layout& layout, const std::vector<yarn_paths::Pie
     for (std::size_t k = 0; k < p.data_points.size(); ++k) {
       if (k > 0) along += glm::distance(p.data_points[k - 1], p.data_points[k]);
       c.pos.push_back(p.data_points[k]);
-      c.radius.push_back(0.5 * d);
+      c.radius.push_back(0.5 * size.core_diameter);
+      c.shell.push_back(0.5 * size.free_diameter);
       c.along.push_back(along);
       c.inv_mass.push_back(mark[k] == 2 ? 0.0 : 1.0);
       c.piece.push_back(static_cast<std::uint32_t>(i));
@@ -73,6 +76,8 @@ Chains chains_of(const layout::Layout& layout, const std::vector<yarn_paths::Pie
   }
   c.first.push_back(c.pos.size());
   c.rest = c.pos;
+  c.on_loop.resize(on_loop.size());
+  for (std::size_t i = 0; i < on_loop.size(); ++i) c.on_loop[i] = on_loop[i] > 0 ? 1 : 0;
   c.segment.assign(c.pos.size(), 0);
   c.contactable.assign(c.pos.size(), 0);
   c.rest_length.assign(c.pos.size(), 0.0);

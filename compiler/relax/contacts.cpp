@@ -108,7 +108,7 @@ std::int8_t Contacts::neighbours_side(const Pair& p) const {
     for (int db = -1; db <= 1; ++db) {
       if ((da == 0 && db == 0) || (da < 0 && p.a == 0) || (db < 0 && p.b == 0)) continue;
       const Pair key{static_cast<std::uint32_t>(static_cast<int>(p.a) + da), static_cast<std::uint32_t>(static_cast<int>(p.b) + db),
-                     p.sx, p.sy, 0, 0, 0.0f};
+                     p.sx, p.sy, 0, 0, 0.0f, 0.0f};
       const auto it = std::lower_bound(by_segments_.begin(), by_segments_.end(), key,
                                        [&](std::uint32_t x, const Pair& y) { return key_before(pairs_[x], y); });
       if (it == by_segments_.end()) continue;
@@ -144,7 +144,7 @@ Contacts::Grid Contacts::grid_of(const Chains& c) const {
     g.hi = glm::max(g.hi, glm::dvec2(m));
   }
   if (g.empty()) return g;
-  const double cell = c.thickest + margin_ + longest;
+  const double cell = c.thickest + margin_ + longest;  // free diameters: the shells' reach
   g.columns = spatial::Columns(cell);
   g.columns.reserve(n);
   for (std::size_t i = 0; i + 1 < n; ++i) {
@@ -180,21 +180,22 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
             const std::size_t bs = b.item;
             if (bs <= a) return;
             if (b.sx == 0 && b.sy == 0 && c.piece[a] == c.piece[bs] &&
-                std::abs(along_mid(c, a) - along_mid(c, bs)) <= 1.8 * (c.radius[a] + c.radius[bs]))
+                std::abs(along_mid(c, a) - along_mid(c, bs)) <= 1.8 * (c.shell[a] + c.shell[bs]))
               return;
             const glm::dvec3 offset(b.sx * period_.x, b.sy * period_.y, 0.0);
             const glm::dvec3 between = ma - midpoint(c, bs) - offset;
-            const double bound = c.radius[a] + c.radius[bs] + margin_ + half_a + 0.5 * glm::distance(c.pos[bs], c.pos[bs + 1]);
+            const double bound = c.shell[a] + c.shell[bs] + margin_ + half_a + 0.5 * glm::distance(c.pos[bs], c.pos[bs + 1]);
             if (glm::dot(between, between) > bound * bound) return;
             const auto held = static_cast<std::uint8_t>((c.inv_mass[a] == 0.0 ? 1 : 0) | (c.inv_mass[a + 1] == 0.0 ? 2 : 0) |
                                                         (c.inv_mass[bs] == 0.0 ? 4 : 0) | (c.inv_mass[bs + 1] == 0.0 ? 8 : 0));
-            Pair pair{static_cast<std::uint32_t>(a), b.item, b.sx, b.sy, held, 0, static_cast<float>(c.radius[a] + c.radius[bs])};
+            Pair pair{static_cast<std::uint32_t>(a), b.item, b.sx, b.sy, held, 0, static_cast<float>(c.radius[a] + c.radius[bs]),
+                      static_cast<float>(c.shell[a] + c.shell[bs])};
             const auto known = std::lower_bound(previous.begin(), previous.end(), pair, key_before);
             if (known != previous.end() && !key_before(pair, *known) && known->side != 0)
               pair.side = known->side;
             else
               pair.side = side_of(c, pair);
-            if (gap(c, pair) < margin_) found[block].push_back(pair);
+            if (gap(c, pair) + pair.reach - pair.shell < margin_) found[block].push_back(pair);
       });
     }
   });
@@ -260,7 +261,7 @@ bool Contacts::stale(const Chains& c) const {
   return false;
 }
 
-double Contacts::push_apart(Chains& c, double skin, double scale, Strain* strain) {
+double Contacts::push_apart(Chains& c, double skin, double scale, bool shells, Strain* strain) {
   auto push = [&](Pair& p, double& deepest, Strain& asked) {
     const std::size_t a = p.a, b = p.b;
     const glm::dvec3 offset = shift(p);
@@ -268,7 +269,7 @@ double Contacts::push_apart(Chains& c, double skin, double scale, Strain* strain
     // Most listed pairs are not touching: two spheres around the segments tell at once.
     const glm::dvec3 ha = 0.5 * (c.pos[a + 1] - c.pos[a]), hb = 0.5 * (c.pos[b + 1] - c.pos[b]);
     const glm::dvec3 between = (c.pos[a] + ha) - (c.pos[b] + hb + offset);
-    const double bound = reach * (1.0 + skin) + std::sqrt(glm::dot(ha, ha)) + std::sqrt(glm::dot(hb, hb));
+    const double bound = (shells ? p.shell : reach * (1.0 + skin)) + std::sqrt(glm::dot(ha, ha)) + std::sqrt(glm::dot(hb, hb));
     if (glm::dot(between, between) > bound * bound) return;
     double s, t;
     glm::dvec3 normal;
@@ -282,12 +283,19 @@ double Contacts::push_apart(Chains& c, double skin, double scale, Strain* strain
     }
     const double target = reach * (1.0 + skin) * scale;
     deepest = std::max(deepest, reach - dist);
-    if (dist >= target) return;
+    // Past the cores, the shells: pressure (h0 / h)^p - 1 of the thickness h left of h0,
+    // a step of it a sweep, never past the free surfaces.
+    double goal = target;
+    if (dist >= target) {
+      if (!shells || dist >= p.shell) return;
+      const double h0 = p.shell - reach, h = dist - reach;
+      goal = dist + std::min(shell_rate * h0 * (std::pow(h0 / h, shell_exponent) - 1.0), p.shell - dist);
+    }
     const double w[4] = {p.held & 1 ? 0.0 : 1.0 - s, p.held & 2 ? 0.0 : s, p.held & 4 ? 0.0 : 1.0 - t, p.held & 8 ? 0.0 : t};
     const double sum = (1.0 - s) * w[0] + s * w[1] + (1.0 - t) * w[2] + t * w[3];
     if (sum > 0.0) {
-      const double lambda = (target - dist) / sum;
-      if (strain) asked.add((target - dist) * normal, std::max(dist, 0.0) * normal);
+      const double lambda = (goal - dist) / sum;
+      if (strain) asked.add((goal - dist) * normal, std::max(dist, 0.0) * normal);
       c.pos[a] += lambda * w[0] * normal;
       c.pos[a + 1] += lambda * w[1] * normal;
       c.pos[b] -= lambda * w[2] * normal;
@@ -323,6 +331,18 @@ double Contacts::deepest(const Chains& c) const {
   double worst = 0.0;
   for (const Pair& p : pairs_) worst = std::max(worst, -gap(c, p));
   return worst;
+}
+
+double Contacts::compression(const Chains& c) const {
+  double sum = 0.0;
+  std::size_t pressed = 0;
+  for (const Pair& p : pairs_) {
+    const double dist = gap(c, p) + p.reach;
+    if (dist >= p.shell) continue;
+    sum += 1.0 - std::max(0.0, dist - p.reach) / (p.shell - p.reach);
+    ++pressed;
+  }
+  return pressed > 0 ? sum / static_cast<double>(pressed) : 0.0;
 }
 
 void Contacts::moved(const std::function<void(glm::dvec3&)>& move, glm::dvec2 growth) {

@@ -41,18 +41,23 @@ class Contacts {
   Contacts(glm::dvec2 period, double margin, bool round, int threads)
       : period_(period), margin_(margin), round_(round), threads_(threads) {}
 
-  // Finds every pair of contactable segments whose capsules are less than the margin apart:
-  // of different pieces, or of one piece more than 1.8 diameters apart along it (a little
-  // inside the two of measure::deepest_penetration, so that every pair it counts is kept apart).
+  // Finds every pair of contactable segments whose free surfaces are less than the margin
+  // apart: of different pieces, or of one piece more than 1.8 free diameters apart along it
+  // (a little inside the two of measure::deepest_penetration, so that every pair it counts
+  // is kept apart).
   void find(const Chains& chains);
   // Whether a point has moved half the margin since find(), so a pair may be missing.
   bool stale(const Chains& chains) const;
-  // One sweep: every overlapping pair pushed to its radii plus `skin` (a fraction) apart,
-  // times `scale` (at most 1: a ramp). Returns the deepest overlap met (before its push,
-  // of the full radii), mm, 0 if none.
-  double push_apart(Chains& chains, double skin, double scale = 1.0, Strain* strain = nullptr);
-  // The deepest overlap of the pairs, mm, without moving anything.
+  // One sweep: every pair whose cores overlap pushed to its core radii plus `skin` (a
+  // fraction) apart, times `scale` (at most 1: a ramp); with `shells`, every pair closer
+  // than its free radii pushed apart by its shells' pressure (see relax.hpp). Returns the
+  // deepest overlap of cores met (before its push, of the full radii), mm, 0 if none.
+  double push_apart(Chains& chains, double skin, double scale, bool shells, Strain* strain = nullptr);
+  // The deepest overlap of the pairs' cores, mm, without moving anything.
   double deepest(const Chains& chains) const;
+  // The mean squeeze of the pairs whose shells are pressed, 1 - h / h0 (h the shells'
+  // thickness left between the cores, h0 the free one), 0 if none.
+  double compression(const Chains& chains) const;
   // The whole fabric was moved by `move` (a change of size): so are the positions the
   // list was built at, and the period grows by `growth` (1 + fraction, per axis).
   void moved(const std::function<void(glm::dvec3&)>& move, glm::dvec2 growth);
@@ -68,7 +73,8 @@ class Contacts {
     // known (they have not crossed while listed, or the fabric is a tube). Set the first
     // time they cross, and kept while the pair is listed, and on into the next list.
     std::int8_t side;
-    float reach;           // mm, the sum of the two radii
+    float reach;           // mm, the sum of the two core radii
+    float shell;           // mm, the sum of the two free radii
   };
   // Pairs in (a, b, image) order: how a pair is looked up.
   static bool key_before(const Pair& x, const Pair& y) {

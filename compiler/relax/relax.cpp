@@ -36,19 +36,28 @@ void keep_lengths(Chains& c, Strain* strain = nullptr) {
   for (std::size_t i = c.pos.size(); i-- > 1;) keep(i - 1);
 }
 
-// Bending: each point's displacement from the layout a step (`rate`, in (0, 1]) toward
-// the mean of its neighbours' along the yarn. A push at a contact spreads over a few
-// diameters of yarn instead of kinking it, and the loop keeps the shape it was laid out in.
-void smooth(Chains& c, double rate) {
+// Bending: an elastic rod whose rest shape is straight. Every three consecutive points
+// move `stiffness` (in (0, 1]) of the way to their chord's line, the middle one toward
+// the neighbours' midpoint and the neighbours away, keeping their centroid: a step down
+// the gradient of the squared second differences, the discrete rod's bending energy.
+// Held lengths and contacts stop it; what is left opens the loops.
+void bend(Chains& c, double stiffness, Strain* strain = nullptr) {
   for (std::size_t piece = 0; piece + 1 < c.first.size(); ++piece) {
     const std::size_t from = c.first[piece], to = c.first[piece + 1];
-    if (to - from < 3) continue;
-    glm::dvec3 before = c.pos[from] - c.rest[from];
     for (std::size_t i = from + 1; i + 1 < to; ++i) {
-      const glm::dvec3 here = c.pos[i] - c.rest[i];
-      const glm::dvec3 after = c.pos[i + 1] - c.rest[i + 1];
-      c.pos[i] += rate * c.inv_mass[i] * (0.5 * (before + after) - here);
-      before = here;
+      const glm::dvec3 second = c.pos[i - 1] + c.pos[i + 1] - 2.0 * c.pos[i];
+      const double wi = c.inv_mass[i], wa = c.inv_mass[i - 1], wb = c.inv_mass[i + 1];
+      const double sum = 4.0 * wi + wa + wb;  // the constraint's gradient (1, -2, 1), squared, by mobility
+      if (sum <= 0.0) continue;
+      const glm::dvec3 step = (stiffness / sum) * second;
+      // (A periodic repeat's size: the step's change of the two segments, by each.)
+      if (strain) {
+        strain->add((2.0 * wi + wa) * step, c.pos[i] - c.pos[i - 1]);
+        strain->add(-(2.0 * wi + wb) * step, c.pos[i + 1] - c.pos[i]);
+      }
+      c.pos[i] += 2.0 * wi * step;
+      c.pos[i - 1] -= wa * step;
+      c.pos[i + 1] -= wb * step;
     }
   }
 }
@@ -63,7 +72,7 @@ void limit_bends(Chains& c, double radii) {
       const glm::dvec3 mid = 0.5 * (c.pos[i - 1] + c.pos[i + 1]);
       const double half_chord = 0.5 * glm::distance(c.pos[i - 1], c.pos[i + 1]);
       const double rise = glm::distance(c.pos[i], mid);
-      const double radius = radii * c.radius[i];
+      const double radius = radii * c.shell[i];
       // The circle through the three points has radius (half_chord^2 + rise^2) / (2 rise).
       if (rise <= 1e-12 || half_chord * half_chord + rise * rise <= 2.0 * rise * radius) continue;
       const double allowed = half_chord < radius ? radius - std::sqrt(radius * radius - half_chord * half_chord) : radius;
@@ -91,10 +100,26 @@ struct Size {
   // A periodic axis has no edges to draw in from: its size follows the strain the sweep's
   // contacts and lengths asked for (pressure against tension), not the motion.
   bool periodic_width = false, periodic_height = false;
-  glm::dvec2 boost{0.0};
+  glm::dvec2 boost{0.0};     // now, per axis
+  glm::dvec2 most{0.0};      // the largest it may grow to
+  glm::dvec2 last_sign{0.0}; // the sign of the last sweep's motion, per axis
 };
 
-void boost_size(Chains& c, const std::vector<glm::dvec3>& before, const Size& size, const Strain& asked, Contacts& contacts) {
+// The boost adapts as in resilient propagation (Riedmiller and Braun): it grows while the
+// motion keeps its sign and halves when it turns, so a fabric drawing in steadily is
+// carried fast and one that has found its size (the bending and the contacts balanced)
+// is not thrown back and forth.
+double adapt(double motion, double& boost, double most, double& last_sign) {
+  const double sign = motion > 0.0 ? 1.0 : motion < 0.0 ? -1.0 : 0.0;
+  if (sign * last_sign > 0.0)
+    boost = std::min(most, boost * 1.5);
+  else if (sign * last_sign < 0.0)
+    boost = std::max(1.0, boost * 0.25);
+  last_sign = sign;
+  return boost * motion;
+}
+
+void boost_size(Chains& c, const std::vector<glm::dvec3>& before, Size& size, const Strain& asked, Contacts& contacts) {
   glm::dvec2 lo(1e300), hi(-1e300);
   for (const auto& p : c.pos) {
     lo = glm::min(lo, glm::dvec2(p));
@@ -112,8 +137,8 @@ void boost_size(Chains& c, const std::vector<glm::dvec3>& before, const Size& si
     hn += (c.pos[i].y - before[i].y) * h;
     hd += h * h;
   }
-  double grow_w = size.free_width && wd > 0.0 ? std::clamp(size.boost.x * wn / wd, -0.01, 0.01) : 0.0;
-  double grow_h = size.free_height && hd > 0.0 ? std::clamp(size.boost.y * hn / hd, -0.01, 0.01) : 0.0;
+  double grow_w = size.free_width && wd > 0.0 ? std::clamp(adapt(wn / wd, size.boost.x, size.most.x, size.last_sign.x), -0.01, 0.01) : 0.0;
+  double grow_h = size.free_height && hd > 0.0 ? std::clamp(adapt(hn / hd, size.boost.y, size.most.y, size.last_sign.y), -0.01, 0.01) : 0.0;
   if (size.periodic_width) grow_w = asked.lever.x > 0.0 ? std::clamp(asked.stretch.x / asked.lever.x, -0.01, 0.01) : 0.0;
   if (size.periodic_height) grow_h = asked.lever.y > 0.0 ? std::clamp(asked.stretch.y / asked.lever.y, -0.01, 0.01) : 0.0;
   if (grow_w == 0.0 && grow_h == 0.0) return;
@@ -129,6 +154,19 @@ void boost_size(Chains& c, const std::vector<glm::dvec3>& before, const Size& si
   for (std::size_t i = 0; i < c.pos.size(); ++i)
     if (c.inv_mass[i] != 0.0) move(c.pos[i]);
   contacts.moved(move, glm::dvec2(1.0 + grow_w, 1.0 + grow_h));
+}
+
+// The mean distance the points on loops moved since `before`: the fabric's own motion (a
+// tail straightening behind it does not count, nor one edge loop still curling).
+double mean_move(const Chains& c, const std::vector<glm::dvec3>& before) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < c.pos.size(); ++i)
+    if (c.on_loop[i]) {
+      sum += glm::distance(c.pos[i], before[i]);
+      ++n;
+    }
+  return n ? sum / static_cast<double>(n) : 0.0;
 }
 
 double polyline_length(const std::vector<glm::dvec3>& p, std::size_t from, std::size_t to) {
@@ -151,11 +189,11 @@ double length_change(const Chains& c) {
 
 }  // namespace
 
-Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<double>& diameter,
+Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<yarn::Size>& sizes,
               const Options& options) {
   Relaxed out;
-  Chains c = chains_of(layout, pieces, diameter, options.boundary);
-  const double d = c.thickest;
+  Chains c = chains_of(layout, pieces, sizes, options.boundary);
+  const double d = c.thickest_core;
   if (d <= 0.0 || c.pos.empty()) {
     out.pieces = std::move(pieces);
     return out;
@@ -168,14 +206,15 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
     if (layout.knitting == Knitting::flat)
       period = glm::dvec2(layout.wales * layout.loop_width, layout.courses * layout.course_spacing);
   }
-  Contacts contacts(period, contact_margin * d, layout.knitting == Knitting::round, thread_count(options.threads));
+  Contacts contacts(period, contact_margin * c.thickest, layout.knitting == Knitting::round, thread_count(options.threads));
   Size size;
   size.round = layout.knitting == Knitting::round;
   size.free_width = size.free_height = options.boundary != Boundary::held;
   size.periodic_width = period.x > 0.0;
   size.periodic_height = period.y > 0.0;
   // About the number of loops between the swatch's middle and its edges, times a gain.
-  size.boost = size_gain * glm::dvec2(layout.wales, layout.courses);
+  size.most = size_gain * glm::dvec2(layout.wales, layout.courses);
+  size.boost = glm::dvec2(1.0);
 
   contacts.find(c);
   out.stats.start_overlap = contacts.deepest(c) / d;
@@ -196,25 +235,29 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
         options.boundary == Boundary::held ? 1.0 : std::min(1.0, closest + (1.0 - closest) * (iteration + 1) / ramp_sweeps);
     Strain asked;  // only a periodic repeat's size needs it
     Strain* strain = size.periodic_width || size.periodic_height ? &asked : nullptr;
-    const double met = contacts.push_apart(c, contact_skin, scale, strain);
-    // Done when this sweep's pushes were small (a few tolerances), left nothing
-    // overlapping (the list holds every pair that could, until it is stale) and the yarns
-    // have their lengths back: the other steps would only go on drawing the fabric in.
-    if (met <= settled_pushes * tolerance && iteration > 0 && scale == 1.0) {
-      if (contacts.stale(c)) contacts.find(c);
-      // (Held edges keep the swatch's size, so its yarn cannot get its length back.)
-      if (contacts.deepest(c) <= tolerance && (!size.free_height || length_change(c) <= settled_length)) break;
-    }
+    const double met = contacts.push_apart(c, contact_skin, scale, scale == 1.0, strain);
     keep_lengths(c, strain);
-    smooth(c, bending_rate);
+    bend(c, bending_stiffness, strain);
     limit_bends(c, tightest_bend_radii);
     keep_lengths(c, strain);
     boost_size(c, before, size, asked, contacts);
+    // Done when this sweep's pushes were small (a few tolerances), the loops moved by a
+    // small step on average, it left no cores overlapping (the list holds every pair
+    // that could, until it is stale) and the yarns have their lengths back.
+    if (met <= settled_pushes * tolerance && iteration > 0 && scale == 1.0 && mean_move(c, before) <= settled_motion * d) {
+      if (contacts.stale(c)) contacts.find(c);
+      // (Held edges keep the swatch's size, so its yarn cannot get its length back.)
+      if (contacts.deepest(c) <= tolerance && (!size.free_height || length_change(c) <= settled_length)) {
+        ++iteration;
+        break;
+      }
+    }
   }
   if (contacts.stale(c)) contacts.find(c);
   out.stats.iterations = iteration;
   out.stats.period = contacts.period();
   out.stats.end_overlap = contacts.deepest(c) / d;
+  out.stats.compression = contacts.compression(c);
   out.stats.length_change = length_change(c);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const std::size_t from = c.first[i], to = c.first[i + 1];

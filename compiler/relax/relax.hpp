@@ -1,20 +1,22 @@
-// Relaxation: moves the laid-out yarns apart until no two pieces of yarn overlap, each
-// yarn keeping its length, its smoothness and the side it passes every other yarn on.
-// docs/relaxation.md tells what it achieves and what not yet.
+// Relaxation: moves the laid-out yarns to the shape a real yarn takes in the fabric: its
+// cores never overlap, its shells compress where yarns press on each other, its bending
+// stiffness opens the loops, it keeps its length and passes every other yarn on the side
+// it did. docs/relaxation.md tells what it achieves and what not yet.
 //
-// The yarns are chains of centreline points (the layout's curves, refined so that
-// consecutive points are about 0.7 diameters apart) and the chains' segments are
-// capsules of the yarn's radius. Position-based dynamics (Muller et al. 2007), in a
-// fixed order so the result is the same on any machine and for any thread count:
-//   - contact: two segments of different pieces, or of one piece more than 1.8
-//     diameters apart along it, end at least r_a + r_b apart (plus an 8% skin, so the
-//     smooth curve through the chain clears too), reached over the first sweeps (a
-//     ramp); where two cross seen from the face, the one in front stays in front (flat
-//     work);
+// A yarn has a compact core and a free (visible) diameter (yarn/size.hpp). The yarns are
+// chains of centreline points (the layout's curves, refined so that consecutive points
+// are about 0.7 core diameters apart) and the chains' segments are capsules. Position-based
+// dynamics (Muller et al. 2007), in a fixed order so the result is the same on any machine
+// and for any thread count:
+//   - contact: two segments of different pieces, or of one piece more than 1.8 free
+//     diameters apart along it, end at least their core radii apart (plus an 8% skin, so
+//     the smooth curve through the chain clears too), reached over the first sweeps (a
+//     ramp); between the cores' and the free radii the shells push back by a pressure law,
+//     (h0 / h)^p - 1 of the shells' thickness h (Singal et al.); where two cross seen from
+//     the face, the one in front stays in front (flat work);
 //   - length: every segment keeps its length;
-//   - bending: the displacement from the layout is smoothed along the yarn, so a push at
-//     a contact bends the yarn over a few diameters instead of kinking it; no bend
-//     tighter than 1.2 tube radii;
+//   - bending: an elastic rod whose rest shape is straight: every three points a step
+//     toward their chord, keeping their centroid; no bend tighter than 1.2 core radii;
 //   - size: the swatch's change of width and height, sped up; a periodic repeat's from
 //     the strain its constraints ask for (see relax.cpp).
 // The contacts are found with a grid of cells about two diameters wide, rebuilt when some
@@ -27,6 +29,7 @@
 #include <glm/vec2.hpp>
 
 #include "layout/layout.hpp"
+#include "yarn/size.hpp"
 #include "yarn_paths/yarn_paths.hpp"
 
 namespace knitc::relax {
@@ -41,26 +44,30 @@ enum class Boundary {
 
 struct Options {
   Boundary boundary = Boundary::free;
-  double spacing = 0.7;     // chain points about this many diameters apart (see refine)
-  double tolerance = 0.02;  // done when no two capsules overlap by more than this fraction of d
+  double spacing = 0.7;     // chain points about this many core diameters apart (see refine)
+  double tolerance = 0.02;  // done when no two cores overlap by more than this fraction of the core d
   int max_iterations = 400;
   int threads = 0;          // 0: every core; the result is the same for any count
 };
 
-// The constants of the method, in diameters or tube radii.
-inline constexpr double contact_skin = 0.08;         // capsules are pushed to (1 + skin) (r_a + r_b) apart
-inline constexpr double contact_margin = 0.5;        // contact pairs are listed up to this many d apart
-inline constexpr double bending_rate = 0.1;          // the smoothing step's rate
-inline constexpr double tightest_bend_radii = 1.2;   // no chain bends tighter than this many tube radii
+// The constants of the method, in diameters or radii.
+inline constexpr double contact_skin = 0.08;         // cores are pushed to (1 + skin) (r_a + r_b) apart
+inline constexpr double contact_margin = 0.25;       // contact pairs are listed up to this many free d past the free radii
+inline constexpr double shell_exponent = 2.6;        // p of the pressure law: 2.4 (acrylic) to 2.9 (cotton), Singal et al.
+inline constexpr double shell_rate = 0.02;           // a shell's push a sweep, of its thickness, per unit of pressure
+inline constexpr double bending_stiffness = 0.3;     // of the way to straight, every three points a sweep
+inline constexpr double tightest_bend_radii = 1.2;   // no chain bends tighter than this many core radii
 inline constexpr double size_gain = 1024.0;          // the size boost per loop across (see relax.cpp)
 inline constexpr int ramp_sweeps = 10;               // the contact distance reaches the radii over this many sweeps
 inline constexpr double settled_pushes = 3.0;        // done once no push is deeper than this many tolerances
 inline constexpr double settled_length = 0.015;      // and no piece's length is further than this fraction off
+inline constexpr double settled_motion = 0.002;      // and the loops' points moved this many core d in the sweep, on average
 
 struct Stats {
   int iterations = 0;
-  double start_overlap = 0.0;  // deepest capsule overlap before, as a fraction of the thickest d
+  double start_overlap = 0.0;  // deepest overlap of two cores before, as a fraction of the thickest core d
   double end_overlap = 0.0;    // and after
+  double compression = 0.0;    // after: the mean squeeze of the pressed shells, 1 - h / h0 (0: none pressed)
   double length_change = 0.0;  // the largest relative change of a piece's length, >= 0
   glm::dvec2 period{0.0};      // mm, a periodic swatch's repeat at the end (0: not periodic that way)
 };
@@ -72,13 +79,14 @@ struct Relaxed {
 
 // The pieces with points inserted on each piece's interpolating curve (chord-length
 // parametrisation) so that no two consecutive points are more than spacing x d apart;
-// the old points are kept and loop_first follows them. diameter: mm, per Pattern::yarns.
+// the old points are kept and loop_first follows them. diameter: mm, per Pattern::yarns
+// (the relaxation passes the core diameters).
 std::vector<yarn_paths::Piece> refine(std::vector<yarn_paths::Piece> pieces, const std::vector<double>& diameter,
                                       double spacing);
 
 // Relaxes refined chains (see refine) laid out by `layout`; the result has the same points,
-// moved. diameter: mm, per Pattern::yarns.
-Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> chains, const std::vector<double>& diameter,
+// moved. sizes: per Pattern::yarns.
+Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> chains, const std::vector<yarn::Size>& sizes,
               const Options& options);
 
 }  // namespace knitc::relax
