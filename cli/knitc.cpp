@@ -170,6 +170,9 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
   if (const auto shape = knitc::measure::loop_shape(fabric.layout, fabric.pieces); shape.loops > 0)
     fmt::print(stderr, "loop shape  l {:.2f} mm, wale spacing {:.2f} mm, course spacing {:.2f} mm: kc {:.2f}, kw {:.2f}, kc/kw {:.2f} ({} inner loops)\n",
                shape.loop_length, shape.wale_spacing, shape.course_spacing, shape.kc, shape.kw, shape.kc / shape.kw, shape.loops);
+  if (const auto shape = knitc::measure::loop_shape(fabric.layout, fabric.pieces); shape.loops > 0)
+    fmt::print(stderr, "in the plane {:.2f} mm across a wale, {:.2f} mm up a course; centrelines {:.2f} mm deep\n", shape.wale_pitch,
+               shape.course_pitch, shape.depth);
   if (fabric.relaxed) {
     const auto& r = fabric.relaxation;
     fmt::print(stderr, "relaxation  {} iterations, {:.2f} s; cores overlap {:.3f} core d before, {:.3f} after; lengths changed <= {:.2f}%; "

@@ -15,6 +15,7 @@
 #include "measure/measure.hpp"
 #include "support.hpp"
 #include "writers/writers.hpp"
+#include "yarn/size.hpp"
 
 namespace knitc {
 namespace {
@@ -99,7 +100,7 @@ Clearance clearance_of(const nlohmann::json& doc) {
 
 struct Measured {
   Clearance file;
-  double penetration = 0.0;  // measure::measure's, from the compiler's data
+  double penetration = 0.0, core_penetration = 0.0;  // measure::measure's, from the compiler's data
 };
 
 Measured measured(const std::string& body, bool relax) {
@@ -111,7 +112,8 @@ Measured measured(const std::string& body, bool relax) {
   options.relax = relax;
   const Fabric f = compile(p, options);
   const auto doc = nlohmann::json::parse(writers::centreline_json(p, f, yarn_paths::LoopModel::smooth));
-  return {clearance_of(doc), measure::measure(p, f.layout, f.pieces).deepest_penetration};
+  const auto m = measure::measure(p, f.layout, f.pieces);
+  return {clearance_of(doc), m.deepest_penetration, m.deepest_core_penetration};
 }
 
 // The file and the compiler agree on how deep the tubes overlap, unrelaxed and relaxed.
@@ -125,20 +127,23 @@ TEST(ClearanceFromFile, AgreesWithTheCompilersMeasure) {
       const Measured m = measured(body, relax);
       EXPECT_GE(m.file.free, m.penetration - 0.005) << body << (relax ? " relaxed" : "");
       EXPECT_LE(m.file.free, m.penetration + 0.03) << body << (relax ? " relaxed" : "");
+      EXPECT_GE(m.file.core, m.core_penetration - 0.005) << body << (relax ? " relaxed" : "");
+      EXPECT_LE(m.file.core, m.core_penetration + 0.06) << body << (relax ? " relaxed" : "");
     }
   }
 }
 
 // At the seed paper's proportions the layout's interlocks overlap by some 0.85 of the
-// free diameter, and so the cores too; relaxed, the free tubes clear, and the cores,
-// 1/1.91 of them, clear by far.
-TEST(ClearanceFromFile, TheCoresClearWhereTheTubesDo) {
+// free diameter, and so the cores too; relaxed, the cores clear (within the 5% of
+// a core diameter) and the shells between core and free surface are pressed, never past
+// their whole depth.
+TEST(ClearanceFromFile, TheCoresClearAndTheShellsPress) {
   const Measured off = measured("cast_on(6)\nrows(6, \"k\")\n", false);
   EXPECT_GT(off.file.free, 0.8);
   EXPECT_GT(off.file.core, 0.5);
   const Measured on = measured("cast_on(6)\nrows(6, \"k\")\n", true);
-  EXPECT_LT(on.file.free, 0.03);
-  EXPECT_LE(on.file.core, 0.0);
+  EXPECT_LE(on.file.core, 0.05);
+  EXPECT_LT(on.file.free, 1.0 - 1.0 / yarn::free_per_core);
 }
 
 }  // namespace

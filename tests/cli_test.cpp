@@ -225,11 +225,12 @@ TEST(Cli, RelaxOnClearsTheOverlapAndSaysSo) {
   ASSERT_EQ(off.exit_code, 0) << off.err;
   ASSERT_EQ(on.exit_code, 0) << on.err;
   EXPECT_NE(off.out.find("relaxation  off"), std::string::npos);
-  // The figures as numbers: the seed paper's loops overlap by about 0.85 d; relaxed, the
-  // capsules by under 0.1 d, and the written tubes hardly at all.
+  // The figures as numbers: the seed paper's loops overlap by about 0.85 d (and their
+  // cores, 1/1.91 of it, by 0.7 core d); relaxed, the cores by under 0.1 core d, and the
+  // written tubes (their shells pressed) by under 0.1 d.
   EXPECT_NEAR(figure(off.out, "penetration "), 0.85, 0.03) << off.out;
   EXPECT_LT(figure(on.out, "penetration "), 0.1) << on.out;
-  EXPECT_GT(figure(on.out, " iterations, overlap "), 0.8) << on.out;
+  EXPECT_GT(figure(on.out, " iterations, overlap "), 0.6) << on.out;
   EXPECT_LT(figure(on.out, " -> "), 0.1) << on.out;
   const auto stats = test::run_knitc("build patterns/jersey.lua -o " + quoted(test::scratch_dir("relax") / "j.glb") +
                                      " --relax on --edges held --stats");

@@ -104,7 +104,10 @@ INSTANTIATE_TEST_SUITE_P(Fabrics, Relaxed,
                                          "stranded"));
 
 TEST(Relax, SameForAnyThreadCount) {
-  const Pattern pattern = at_paper_gauge("rib_1x1");
+  const std::string source =
+      "pattern { gauge = { loop_width = 4, loop_height = 4.2, thickness = 2 }, yarns = { A = { diameter = 1 } }, "
+      "knitting = \"flat\" }\ncast_on(10)\nrows(10, \"k1, p1\")\n";
+  const Pattern pattern = runtime::run_pattern(source, "rib.lua").pattern;
   CompileOptions one = centrelines(true), two = centrelines(true);
   one.threads = 1;
   two.threads = 3;
