@@ -13,6 +13,7 @@
 #include "measure/measure.hpp"
 #include "relax/contacts.hpp"
 #include "relax/relax.hpp"
+#include "relax/repeat.hpp"
 #include "support.hpp"
 
 namespace knitc {
@@ -220,6 +221,47 @@ TEST(Relax, RefineKeepsEveryPointAndLoop) {
     // The chords between data points are cut into pieces of at most 0.5: on the curve, a
   // little more where it bends.
   for (std::size_t k = 1; k < b.data_points.size(); ++k) EXPECT_LE(glm::distance(b.data_points[k - 1], b.data_points[k]), 0.75);
+}
+
+// The repeat is found from the layout: the smallest block of loops that repeats across
+// the interior, taken whole times to at least four loops each way.
+TEST(Repeat, IsFoundFromTheLayout) {
+  auto repeat_of = [](const std::string& body) {
+    const std::string source =
+        "pattern { gauge = { loop_width = 4, loop_height = 4.2, thickness = 2 }, yarns = { A = { diameter = 1 } }, "
+        "knitting = \"flat\" }\n" + body;
+    return relax::find_repeat(layout::lay_out(runtime::run_pattern(source, "t.lua").pattern));
+  };
+  const auto jersey = repeat_of("cast_on(12)\nfor _ = 1, 6 do row \"k\" row \"p\" end\n");
+  ASSERT_TRUE(jersey);
+  EXPECT_EQ(jersey->wales, 4);    // one wale, four times
+  EXPECT_EQ(jersey->courses, 4);  // a knit row and a purl row, twice
+  const auto rib = repeat_of("cast_on(18)\nrows(12, \"k3, p3\")\n");
+  ASSERT_TRUE(rib);
+  EXPECT_EQ(rib->wales, 6);
+  EXPECT_EQ(rib->courses, 4);
+  EXPECT_FALSE(repeat_of("cast_on(6)\nrows(12, \"k\")\n")) << "no room for a tile inside the edges";
+  EXPECT_FALSE(repeat_of("cast_on(12)\nrows(4, \"k\")\nrows(4, \"p\")\nrows(4, \"k1, p1\")\n")) << "bands, not a repeat";
+  EXPECT_FALSE(relax::find_repeat(layout::lay_out(at_paper_gauge("half_cardigan")))) << "tucks relax whole";
+}
+
+// Relaxed by its repeat, a swatch's tiled interior is held and its edges relaxed
+// against it: the cores clear, and the tile's loop shape is the swatch's.
+TEST(Repeat, TiledSwatchClearsAndTakesTheTilesShape) {
+  const Pattern pattern = test::jersey(16, 20);
+  const Fabric by_repeat = compile(pattern, centrelines(true));
+  ASSERT_EQ(by_repeat.relaxation.repeat_wales, 4);
+  EXPECT_GT(by_repeat.relaxation.held_share, 0.1);
+  EXPECT_LE(measure::measure(pattern, by_repeat.layout, by_repeat.pieces).deepest_core_penetration, 0.05);
+  relax::Options tile;
+  tile.boundary = relax::Boundary::periodic;
+  CompileOptions alone = centrelines(true);
+  const Pattern repeat = test::jersey(4, 4);
+  alone.relaxation = tile;
+  const Fabric periodic = compile(repeat, alone);
+  const auto a = measure::loop_shape(by_repeat.layout, by_repeat.pieces);
+  ASSERT_GT(periodic.relaxation.period.x, 0.0);
+  EXPECT_NEAR(a.wale_pitch, periodic.relaxation.period.x / 4.0, 0.03 * a.wale_pitch);
 }
 
 TEST(Relax, ClosestPointsOfSegments) {

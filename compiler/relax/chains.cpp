@@ -75,6 +75,7 @@ Chains chains_of(const layout::Layout& layout, const std::vector<yarn_paths::Pie
     }
   }
   c.first.push_back(c.pos.size());
+  c.along_period.assign(pieces.size(), 0.0);
   c.rest = c.pos;
   c.on_loop.resize(on_loop.size());
   for (std::size_t i = 0; i < on_loop.size(); ++i) c.on_loop[i] = on_loop[i] > 0 ? 1 : 0;

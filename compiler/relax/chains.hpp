@@ -25,6 +25,9 @@ struct Chains {
   std::vector<std::uint8_t> contactable;  // per segment: takes part in contacts
   std::vector<double> rest_length;        // per segment, mm
   std::vector<std::size_t> first;         // per piece, its first point; then one past the end
+  // Per piece: how far along it (mm) its image one period on in x lies, when the piece's
+  // yarn runs on into the next tile (see Image); 0 when it does not.
+  std::vector<double> along_period;
   double thickest = 0.0;                  // mm, the largest free diameter
   double thickest_core = 0.0;             // mm, the largest core diameter
 };
@@ -34,5 +37,25 @@ struct Chains {
 // selvedge, tails) out of the contacts.
 Chains chains_of(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& pieces,
                  const std::vector<yarn::Size>& sizes, Boundary boundary);
+
+// What the sweeps are given beside the layout: where they start (every chain point's
+// position, in chains_of's order, and whether it is held there; empty: the layout's, none
+// held; the rest lengths stay the layout's), and periodic images: points kept, after every
+// sweep, at another point moved `across` periods in x (a tile's yarn running on into the
+// next tile, so that its edge loops are pulled as the middle ones are).
+struct Image {
+  std::uint32_t point, source;
+  std::int8_t across;
+};
+struct Start {
+  std::vector<glm::dvec3> pos;
+  std::vector<std::uint8_t> held;
+  std::vector<Image> images;
+};
+
+// The sweeps on the chains of `pieces` (see relax.hpp), from the layout or from `start`.
+// A held interior keeps the fabric's size.
+Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<yarn::Size>& sizes,
+                     const Options& options, const Start* start);
 
 }  // namespace knitc::relax

@@ -150,11 +150,12 @@ Contacts::Grid Contacts::grid_of(const Chains& c) const {
   for (std::size_t i = 0; i + 1 < n; ++i) {
     if (!c.contactable[i]) continue;
     const glm::dvec3 m = midpoint(c, i);
-    // Periodic: a segment near an edge also stands in for its image across the swatch.
+    // Periodic: a segment also stands in for its images a period on and back, every one
+    // (a repeat is small, and a tuck's held loop reaches two courses past its own).
     for (int sx = -1; sx <= 1; ++sx) {
-      if (sx != 0 && (period_.x == 0.0 || (sx > 0 ? m.x - g.lo.x : g.hi.x - m.x) > cell)) continue;
+      if (sx != 0 && period_.x == 0.0) continue;
       for (int sy = -1; sy <= 1; ++sy) {
-        if (sy != 0 && (period_.y == 0.0 || (sy > 0 ? m.y - g.lo.y : g.hi.y - m.y) > cell)) continue;
+        if (sy != 0 && period_.y == 0.0) continue;
         g.columns.add(g.columns.cell_of(m + glm::dvec3(sx * period_.x, sy * period_.y, 0.0)), static_cast<std::uint32_t>(i),
                       static_cast<std::int8_t>(sx), static_cast<std::int8_t>(sy));
       }
@@ -179,8 +180,10 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
       grid.columns.near(grid.columns.cell_of(ma), [&](const spatial::Columns::Entry& b) {
             const std::size_t bs = b.item;
             if (bs <= a) return;
-            if (b.sx == 0 && b.sy == 0 && c.piece[a] == c.piece[bs] &&
-                std::abs(along_mid(c, a) - along_mid(c, bs)) <= 1.8 * (c.shell[a] + c.shell[bs]))
+            // One stretch of yarn, not a contact: of one piece, close along it (or along its
+            // image, a period on, when its yarn runs on into the next tile).
+            if (b.sy == 0 && c.piece[a] == c.piece[bs] &&
+                std::abs(along_mid(c, a) - along_mid(c, bs) - b.sx * c.along_period[c.piece[a]]) <= 1.8 * (c.shell[a] + c.shell[bs]))
               return;
             const glm::dvec3 offset(b.sx * period_.x, b.sy * period_.y, 0.0);
             const glm::dvec3 between = ma - midpoint(c, bs) - offset;
@@ -188,6 +191,7 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
             if (glm::dot(between, between) > bound * bound) return;
             const auto held = static_cast<std::uint8_t>((c.inv_mass[a] == 0.0 ? 1 : 0) | (c.inv_mass[a + 1] == 0.0 ? 2 : 0) |
                                                         (c.inv_mass[bs] == 0.0 ? 4 : 0) | (c.inv_mass[bs + 1] == 0.0 ? 8 : 0));
+            if (held == 15) return;  // neither can move: nothing to push
             Pair pair{static_cast<std::uint32_t>(a), b.item, b.sx, b.sy, held, 0, static_cast<float>(c.radius[a] + c.radius[bs]),
                       static_cast<float>(c.shell[a] + c.shell[bs])};
             const auto known = std::lower_bound(previous.begin(), previous.end(), pair, key_before);

@@ -1,6 +1,7 @@
 #include "relax/relax.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <glm/common.hpp>
@@ -10,6 +11,7 @@
 #include "parallel.hpp"
 #include "relax/chains.hpp"
 #include "relax/contacts.hpp"
+#include "relax/repeat.hpp"
 
 namespace knitc::relax {
 
@@ -103,6 +105,7 @@ struct Size {
   glm::dvec2 boost{0.0};     // now, per axis
   glm::dvec2 most{0.0};      // the largest it may grow to
   glm::dvec2 last_sign{0.0}; // the sign of the last sweep's motion, per axis
+  glm::dvec2 mean_strain{0.0};  // periodic: the running mean of the strain asked
 };
 
 // The boost adapts as in resilient propagation (Riedmiller and Braun): it grows while the
@@ -139,8 +142,21 @@ void boost_size(Chains& c, const std::vector<glm::dvec3>& before, Size& size, co
   }
   double grow_w = size.free_width && wd > 0.0 ? std::clamp(adapt(wn / wd, size.boost.x, size.most.x, size.last_sign.x), -0.01, 0.01) : 0.0;
   double grow_h = size.free_height && hd > 0.0 ? std::clamp(adapt(hn / hd, size.boost.y, size.most.y, size.last_sign.y), -0.01, 0.01) : 0.0;
-  if (size.periodic_width) grow_w = asked.lever.x > 0.0 ? std::clamp(asked.stretch.x / asked.lever.x, -0.01, 0.01) : 0.0;
-  if (size.periodic_height) grow_h = asked.lever.y > 0.0 ? std::clamp(asked.stretch.y / asked.lever.y, -0.01, 0.01) : 0.0;
+  // (Its strain, too, is carried further while it keeps its sign: a rib drawing in over
+  // hundreds of sweeps.)
+  // The strain asked is noisy from sweep to sweep (a contact list rebuilt, a crossing
+  // pushed back): its sign is read from a running mean.
+  auto periodic_growth = [&](double stretch, double lever, double& mean, double& boost, double most, double& last_sign) {
+    if (lever <= 0.0) return 0.0;
+    const double strain = stretch / lever;
+    mean = 0.8 * mean + 0.2 * strain;
+    adapt(mean, boost, most, last_sign);
+    return std::clamp(boost * strain, -0.01, 0.01);
+  };
+  if (size.periodic_width)
+    grow_w = periodic_growth(asked.stretch.x, asked.lever.x, size.mean_strain.x, size.boost.x, size.most.x, size.last_sign.x);
+  if (size.periodic_height)
+    grow_h = periodic_growth(asked.stretch.y, asked.lever.y, size.mean_strain.y, size.boost.y, size.most.y, size.last_sign.y);
   if (grow_w == 0.0 && grow_h == 0.0) return;
   auto move = [&](glm::dvec3& p) {
     if (size.round) {
@@ -156,13 +172,13 @@ void boost_size(Chains& c, const std::vector<glm::dvec3>& before, Size& size, co
   contacts.moved(move, glm::dvec2(1.0 + grow_w, 1.0 + grow_h));
 }
 
-// The mean distance the points on loops moved since `before`: the fabric's own motion (a
-// tail straightening behind it does not count, nor one edge loop still curling).
+// The mean distance the free points on loops moved since `before`: the fabric's own
+// motion (a tail straightening behind it does not count, nor held points).
 double mean_move(const Chains& c, const std::vector<glm::dvec3>& before) {
   double sum = 0.0;
   std::size_t n = 0;
   for (std::size_t i = 0; i < c.pos.size(); ++i)
-    if (c.on_loop[i]) {
+    if (c.on_loop[i] && c.inv_mass[i] != 0.0) {
       sum += glm::distance(c.pos[i], before[i]);
       ++n;
     }
@@ -191,12 +207,31 @@ double length_change(const Chains& c) {
 
 Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<yarn::Size>& sizes,
               const Options& options) {
+  if (options.by_repeat && options.boundary == Boundary::free && layout.knitting == Knitting::flat)
+    if (const auto repeat = find_repeat(layout))
+      if (auto out = relax_by_repeat(layout, pieces, sizes, options, *repeat)) return std::move(*out);
+  return relax_chains(layout, std::move(pieces), sizes, options, nullptr);
+}
+
+Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<yarn::Size>& sizes,
+                     const Options& options, const Start* start) {
   Relaxed out;
   Chains c = chains_of(layout, pieces, sizes, options.boundary);
   const double d = c.thickest_core;
   if (d <= 0.0 || c.pos.empty()) {
     out.pieces = std::move(pieces);
     return out;
+  }
+  if (start)
+    for (const Image& image : start->images)
+      if (image.across != 0)
+        c.along_period[c.piece[image.point]] = (c.along[image.source] - c.along[image.point]) / -image.across;
+  const bool held_interior = start && !start->held.empty();
+  if (held_interior) {
+    assert(start->pos.size() == c.pos.size() && start->held.size() == c.pos.size());
+    c.pos = start->pos;
+    for (std::size_t i = 0; i < c.pos.size(); ++i)
+      if (start->held[i]) c.inv_mass[i] = 0.0;
   }
   glm::dvec2 period(0.0);
   if (options.boundary == Boundary::periodic) {
@@ -209,7 +244,8 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
   Contacts contacts(period, contact_margin * c.thickest, layout.knitting == Knitting::round, thread_count(options.threads));
   Size size;
   size.round = layout.knitting == Knitting::round;
-  size.free_width = size.free_height = options.boundary != Boundary::held;
+  // Held edges keep the swatch's size, and a held interior (a tiled repeat's) keeps it too.
+  size.free_width = size.free_height = options.boundary != Boundary::held && !held_interior;
   size.periodic_width = period.x > 0.0;
   size.periodic_height = period.y > 0.0;
   // About the number of loops between the swatch's middle and its edges, times a gain.
@@ -241,10 +277,13 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
     limit_bends(c, tightest_bend_radii);
     keep_lengths(c, strain);
     boost_size(c, before, size, asked, contacts);
+    if (start)
+      for (const Image& image : start->images)
+        c.pos[image.point] = c.pos[image.source] + glm::dvec3(image.across * contacts.period().x, 0.0, 0.0);
     // Done when this sweep's pushes were small (a few tolerances), the loops moved by a
     // small step on average, it left no cores overlapping (the list holds every pair
     // that could, until it is stale) and the yarns have their lengths back.
-    if (met <= settled_pushes * tolerance && iteration > 0 && scale == 1.0 && mean_move(c, before) <= settled_motion * d) {
+    if (met <= settled_pushes * tolerance && iteration > 0 && scale == 1.0 && mean_move(c, before) <= options.settled_motion * d) {
       if (contacts.stale(c)) contacts.find(c);
       // (Held edges keep the swatch's size, so its yarn cannot get its length back.)
       if (contacts.deepest(c) <= tolerance && (!size.free_height || length_change(c) <= settled_length)) {

@@ -47,7 +47,11 @@ struct Options {
   double spacing = 0.7;     // chain points about this many core diameters apart (see refine)
   double tolerance = 0.02;  // done when no two cores overlap by more than this fraction of the core d
   int max_iterations = 400;
+  double settled_motion = 0.002;  // done once the loops' free points moved this many core d in a sweep, on average
   int threads = 0;          // 0: every core; the result is the same for any count
+  // Free edges on flat work with a repeat (repeat.hpp): relax the repeat alone, periodic,
+  // tile it across the fabric, then relax the edges and what does not repeat against it.
+  bool by_repeat = true;
 };
 
 // The constants of the method, in diameters or radii.
@@ -61,7 +65,7 @@ inline constexpr double size_gain = 1024.0;          // the size boost per loop 
 inline constexpr int ramp_sweeps = 10;               // the contact distance reaches the radii over this many sweeps
 inline constexpr double settled_pushes = 3.0;        // done once no push is deeper than this many tolerances
 inline constexpr double settled_length = 0.015;      // and no piece's length is further than this fraction off
-inline constexpr double settled_motion = 0.002;      // and the loops' points moved this many core d in the sweep, on average
+                                                     // (and the loops moved by Options::settled_motion)
 
 struct Stats {
   int iterations = 0;
@@ -70,6 +74,11 @@ struct Stats {
   double compression = 0.0;    // after: the mean squeeze of the pressed shells, 1 - h / h0 (0: none pressed)
   double length_change = 0.0;  // the largest relative change of a piece's length, >= 0
   glm::dvec2 period{0.0};      // mm, a periodic swatch's repeat at the end (0: not periodic that way)
+  // Relaxed by repeat: the tile's loops across and up (0: the whole fabric at once), the
+  // tile's sweeps (the others are the edges'), and the share of the yarn's points held as
+  // tiled.
+  int repeat_wales = 0, repeat_courses = 0, repeat_iterations = 0;
+  double held_share = 0.0;
 };
 
 struct Relaxed {

@@ -1,0 +1,439 @@
+#include "relax/repeat.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "parallel.hpp"
+#include "relax/chains.hpp"
+#include "relax/contacts.hpp"
+#include "spatial/columns.hpp"
+
+namespace knitc::relax {
+
+namespace {
+
+// The loops by (course, needle position): -1 where there is none.
+struct Grid {
+  int courses = 0, wales = 0;
+  std::vector<long> at;
+  long operator()(int course, int wale) const {
+    if (course < 0 || course >= courses || wale < 0 || wale >= wales) return -1;
+    return at[static_cast<std::size_t>(course) * static_cast<std::size_t>(wales) + static_cast<std::size_t>(wale)];
+  }
+};
+
+Grid grid_of(const layout::Layout& layout) {
+  Grid g{layout.courses, layout.wales, {}};
+  g.at.assign(static_cast<std::size_t>(g.courses) * static_cast<std::size_t>(g.wales), -1);
+  for (std::size_t i = 0; i < layout.loops.size(); ++i) {
+    const auto& l = layout.loops[i];
+    if (l.course >= 0 && l.course < g.courses && l.wale >= 0 && l.wale < g.wales)
+      g.at[static_cast<std::size_t>(l.course) * static_cast<std::size_t>(g.wales) + static_cast<std::size_t>(l.wale)] =
+          static_cast<long>(i);
+  }
+  return g;
+}
+
+// Whether loop b is laid out as loop a moved by (wales, courses) of the lattice: the same
+// stitch, shape, yarn and direction, and every data point moved by the same step.
+bool repeats(const layout::Layout& layout, long a, long b, int wales, int courses) {
+  if (a < 0 || b < 0) return a == b;
+  const auto& la = layout.loops[static_cast<std::size_t>(a)];
+  const auto& lb = layout.loops[static_cast<std::size_t>(b)];
+  if (la.stitch != lb.stitch || la.shape != lb.shape || la.yarn != lb.yarn ||
+      layout.direction[static_cast<std::size_t>(la.course)] != layout.direction[static_cast<std::size_t>(lb.course)])
+    return false;
+  const glm::dvec3 step(wales * layout.loop_width, courses * layout.course_spacing, 0.0);
+  const double tolerance = 1e-6 * layout.loop_width;
+  for (int k = 0; k < layout::loop_points; ++k) {
+    const auto K = static_cast<std::size_t>(k);
+    if (glm::distance(la.data_points[K] + step, lb.data_points[K]) > tolerance) return false;
+  }
+  return true;
+}
+
+struct Interior {
+  int course_from, course_to, wale_from, wale_to;  // inclusive
+};
+
+// The smallest period along one axis: every interior loop repeats `period` loops on.
+int smallest_period(const layout::Layout& layout, const Grid& g, const Interior& in, bool across) {
+  const int span = across ? in.wale_to - in.wale_from + 1 : in.course_to - in.course_from + 1;
+  for (int period = 1; period <= std::min(64, span / 2); ++period) {
+    bool all = true;
+    for (int c = in.course_from; all && c <= in.course_to; ++c)
+      for (int w = in.wale_from; all && w <= in.wale_to; ++w) {
+        const int c2 = across ? c : c + period, w2 = across ? w + period : w;
+        if (c2 > in.course_to || w2 > in.wale_to) continue;
+        all = repeats(layout, g(c, w), g(c2, w2), across ? period : 0, across ? 0 : period);
+      }
+    if (all) return period;
+  }
+  return 0;
+}
+
+int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+// The tile's shape is trusted where a loop's neighbourhood is laid out as its tile
+// loop's; where two held stretches of yarn still pass into each other (a loop laid out as
+// its tile loop whose neighbours along the yarn are not), both are freed, a loop's length
+// of yarn either way, for the edges' relaxation to clear.
+void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes, Start& start) {
+  std::vector<double> core, along;
+  std::vector<std::uint32_t> piece;
+  double thickest = 0.0;
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    const yarn::Size& size = sizes[static_cast<std::size_t>(chains[i].yarn)];
+    thickest = std::max(thickest, size.free_diameter);
+    double s = 0.0;
+    for (std::size_t k = 0; k < chains[i].data_points.size(); ++k) {
+      if (k > 0) s += glm::distance(chains[i].data_points[k - 1], chains[i].data_points[k]);
+      core.push_back(0.5 * size.core_diameter);
+      along.push_back(s);
+      piece.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  if (thickest <= 0.0) return;
+  spatial::Columns grid(thickest);
+  for (std::size_t i = 0; i < start.pos.size(); ++i)
+    if (start.held[i]) grid.add(grid.cell_of(start.pos[i]), static_cast<std::uint32_t>(i));
+  grid.index();
+  std::vector<std::uint32_t> overlapping;
+  for (std::size_t i = 0; i < start.pos.size(); ++i) {
+    if (!start.held[i]) continue;
+    grid.near(grid.cell_of(start.pos[i]), [&](const spatial::Columns::Entry& e) {
+      const std::size_t j = e.item;
+      if (j <= i) return;
+      if (piece[i] == piece[j] && std::abs(along[i] - along[j]) <= 2.0 * thickest) return;  // one stretch of yarn
+      if (glm::distance(start.pos[i], start.pos[j]) < core[i] + core[j]) {
+        overlapping.push_back(static_cast<std::uint32_t>(i));
+        overlapping.push_back(static_cast<std::uint32_t>(j));
+      }
+    });
+  }
+  constexpr std::size_t reach = 48;  // points either way: about a loop
+  for (const std::uint32_t i : overlapping) {
+    const std::size_t from = i >= reach ? i - reach : 0, to = std::min(start.pos.size(), static_cast<std::size_t>(i) + reach + 1);
+    for (std::size_t k = from; k < to; ++k)
+      if (piece[k] == piece[i]) start.held[k] = 0;
+  }
+}
+
+}  // namespace
+
+std::optional<Repeat> find_repeat(const layout::Layout& layout) {
+  if (layout.knitting != Knitting::flat || layout.courses < 8 || layout.wales < 8) return std::nullopt;
+  // Tucks: tiled, the held loops and the tuck loops in them lose crossings (half cardigan
+  // at its own gauge: 118 lone crossings lost, docs/relaxation.md), so they relax whole.
+  for (const auto& loop : layout.loops)
+    if (loop.shape == layout::Template::tuck) return std::nullopt;
+  const Grid g = grid_of(layout);
+  const Interior in{2, layout.courses - 3, 2, layout.wales - 3};
+  const int p = smallest_period(layout, g, in, true), q = smallest_period(layout, g, in, false);
+  if (p == 0 || q == 0) return std::nullopt;
+  Repeat r;
+  r.wales = p * ((least_tile + p - 1) / p);
+  r.courses = q * ((least_tile + q - 1) / q);
+  r.wale0 = in.wale_from;
+  r.course0 = in.course_from;
+  if (r.wale0 + r.wales - 1 > in.wale_to || r.course0 + r.courses - 1 > in.course_to) return std::nullopt;
+  for (int c = r.course0; c < r.course0 + r.courses; ++c)
+    for (int w = r.wale0; w < r.wale0 + r.wales; ++w)
+      if (g(c, w) < 0) return std::nullopt;
+  if (2 * static_cast<std::size_t>(r.wales * r.courses) > layout.loops.size()) return std::nullopt;
+  return r;
+}
+
+std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& chains,
+                                       const std::vector<yarn::Size>& sizes, const Options& options, const Repeat& repeat) {
+  const Grid g = grid_of(layout);
+  // Which piece, and which of its loops, each loop is.
+  std::vector<std::pair<long, long>> owner(layout.loops.size(), {-1, -1});
+  for (std::size_t i = 0; i < chains.size(); ++i)
+    for (std::size_t j = 0; j < chains[i].loops.size(); ++j)
+      owner[static_cast<std::size_t>(chains[i].loops[j])] = {static_cast<long>(i), static_cast<long>(j)};
+
+  // The tile: the block's loops as a layout of their own, and each piece's runs of them
+  // (consecutive loops of one course, with what lies between them) as its pieces.
+  layout::Layout tile;
+  tile.courses = repeat.courses;
+  tile.wales = repeat.wales;
+  tile.knitting = Knitting::flat;
+  tile.loop_width = layout.loop_width;
+  tile.course_spacing = layout.course_spacing;
+  tile.float_behind = layout.float_behind;
+  tile.float_in_front = layout.float_in_front;
+  std::vector<long> tile_loop(layout.loops.size(), -1);  // fabric loop -> tile loop
+  for (int c = 0; c < repeat.courses; ++c) {
+    const int course = repeat.course0 + c;
+    tile.needle.push_back(repeat.wales);
+    tile.origin_x.push_back(layout.origin_x[static_cast<std::size_t>(course)]);
+    tile.direction.push_back(layout.direction[static_cast<std::size_t>(course)]);
+    for (int w = 0; w < repeat.wales; ++w) {
+      const auto i = static_cast<std::size_t>(g(course, repeat.wale0 + w));
+      if (owner[i].first < 0) return std::nullopt;
+      layout::Loop loop = layout.loops[i];
+      loop.course = c;
+      loop.wale = w;
+      tile_loop[i] = static_cast<long>(tile.loops.size());
+      tile.loops.push_back(loop);
+    }
+  }
+  std::vector<yarn_paths::Piece> tile_pieces;
+  struct RunImage {
+    std::size_t piece;
+    std::uint32_t point, source;
+    std::int8_t across;
+  };
+  std::vector<RunImage> run_images;
+  std::vector<std::size_t> run_period_end;  // per tile piece: where its image a period on starts (0: none)
+  std::vector<std::pair<std::size_t, std::size_t>> where_in_tile(tile.loops.size());  // tile loop -> piece, loop
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    const auto& piece = chains[i];
+    std::size_t j = 0;
+    while (j < piece.loops.size()) {
+      if (tile_loop[static_cast<std::size_t>(piece.loops[j])] < 0) {
+        ++j;
+        continue;
+      }
+      const int course = layout.loops[static_cast<std::size_t>(piece.loops[j])].course;
+      std::size_t end = j + 1;
+      while (end < piece.loops.size() && tile_loop[static_cast<std::size_t>(piece.loops[end])] >= 0 &&
+             layout.loops[static_cast<std::size_t>(piece.loops[end])].course == course)
+        ++end;
+      // One period of the course's yarn, [from, from + n), and `handles` points on each
+      // side of it: its images in the tiles before and after, kept there as it moves.
+      std::size_t from = piece.loop_first[j], n = piece.loop_last[end - 1] + 1 - from, handles = 0;
+      int across = 0;
+      const bool neighbours = j > 0 && end < piece.loops.size() &&
+                              layout.loops[static_cast<std::size_t>(piece.loops[j - 1])].course == course &&
+                              layout.loops[static_cast<std::size_t>(piece.loops[end])].course == course;
+      if (neighbours) {
+        const std::size_t period = piece.loop_first[end] - from;
+        const glm::dvec3 step = piece.data_points[from + period] - piece.data_points[from];
+        across = static_cast<int>(std::lround(step.x / (repeat.wales * layout.loop_width)));
+        const std::size_t want = 8;
+        bool periodic = (across == 1 || across == -1) && from >= want && from + period + want <= piece.data_points.size() &&
+                        glm::distance(step, glm::dvec3(across * repeat.wales * layout.loop_width, 0.0, 0.0)) < 1e-3 * layout.loop_width;
+        for (std::size_t h = 1; periodic && h <= want; ++h)
+          periodic = glm::distance(piece.data_points[from - h] + step, piece.data_points[from + period - h]) < 1e-3 * layout.loop_width &&
+                     glm::distance(piece.data_points[from + period + h - 1] - step, piece.data_points[from + h - 1]) < 1e-3 * layout.loop_width;
+        if (periodic) {
+          n = period;
+          handles = want;
+        }
+      }
+      yarn_paths::Piece run;
+      run.yarn = piece.yarn;
+      run.data_points.assign(piece.data_points.begin() + static_cast<std::ptrdiff_t>(from - handles),
+                             piece.data_points.begin() + static_cast<std::ptrdiff_t>(from + n + handles));
+      const std::size_t base = from - handles;
+      for (std::size_t k = j; k < end; ++k) {
+        const auto t = static_cast<std::size_t>(tile_loop[static_cast<std::size_t>(piece.loops[k])]);
+        where_in_tile[t] = {tile_pieces.size(), run.loops.size()};
+        run.loops.push_back(static_cast<int>(t));
+        run.loop_first.push_back(piece.loop_first[k] - base);
+        run.loop_last.push_back(piece.loop_last[k] - base);
+      }
+      for (std::size_t h = 0; h < handles; ++h) {  // in the run's own indices; made global below
+        run_images.push_back({tile_pieces.size(), static_cast<std::uint32_t>(h), static_cast<std::uint32_t>(h + n),
+                              static_cast<std::int8_t>(-across)});
+        run_images.push_back({tile_pieces.size(), static_cast<std::uint32_t>(handles + n + h), static_cast<std::uint32_t>(handles + h),
+                              static_cast<std::int8_t>(across)});
+      }
+      tile_pieces.push_back(std::move(run));
+      run_period_end.push_back(handles > 0 ? handles + n : 0);
+      j = end;
+    }
+  }
+
+  Options tile_options = options;
+  tile_options.boundary = Boundary::periodic;
+  tile_options.by_repeat = false;
+  // A tile is small: settled four times as far, it costs little and every loop follows it.
+  tile_options.settled_motion = 0.25 * options.settled_motion;
+  tile_options.max_iterations = 4 * options.max_iterations;
+  Start links;
+  {
+    std::vector<std::uint32_t> first(tile_pieces.size() + 1, 0);
+    for (std::size_t t = 0; t < tile_pieces.size(); ++t)
+      first[t + 1] = first[t] + static_cast<std::uint32_t>(tile_pieces[t].data_points.size());
+    for (const RunImage& r : run_images)
+      links.images.push_back({first[r.piece] + r.point, first[r.piece] + r.source, r.across});
+  }
+  const Relaxed relaxed_tile = relax_chains(tile, tile_pieces, sizes, tile_options, &links);
+  const glm::dvec2 rest_period(repeat.wales * layout.loop_width, repeat.courses * layout.course_spacing);
+  if (relaxed_tile.stats.period.x <= 0.0 || relaxed_tile.stats.period.y <= 0.0) return std::nullopt;
+  const glm::dvec2 stretch = relaxed_tile.stats.period / rest_period;  // the lattice's, per axis
+  // The whole fabric stretched as the tile was, about the tile's first loop's P0.
+  const glm::dvec3 origin = tile.loops.front().data_points[0];
+  auto affine = [&](const glm::dvec3& p) {
+    return glm::dvec3((p.x - origin.x) * (stretch.x - 1.0), (p.y - origin.y) * (stretch.y - 1.0), 0.0);
+  };
+
+  // Every point's own move (over the lattice's stretch): a tiled loop's is its tile
+  // loop's; the others' are blended along their yarn between the nearest tiled points.
+  std::vector<std::vector<glm::dvec3>> local(chains.size());
+  std::vector<std::vector<std::uint8_t>> tiled(chains.size());
+  std::vector<std::uint8_t> loop_tiled(layout.loops.size(), 0);
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    local[i].assign(chains[i].data_points.size(), glm::dvec3(0.0));
+    tiled[i].assign(chains[i].data_points.size(), 0);
+  }
+  // The loop the tile has in each loop's place, and whether it is laid out as that one.
+  auto tile_place = [&](const layout::Loop& loop) {
+    const int dc = loop.course - repeat.course0, dw = loop.wale - repeat.wale0;
+    return glm::ivec2(dw - floor_div(dw, repeat.wales) * repeat.wales, dc - floor_div(dc, repeat.courses) * repeat.courses);
+  };
+  std::vector<std::uint8_t> as_tiled(layout.loops.size(), 0);
+  for (std::size_t l = 0; l < layout.loops.size(); ++l) {
+    const auto& loop = layout.loops[l];
+    const glm::ivec2 t = tile_place(loop);
+    as_tiled[l] = repeats(layout, g(repeat.course0 + t.y, repeat.wale0 + t.x), static_cast<long>(l), loop.wale - (repeat.wale0 + t.x),
+                          loop.course - (repeat.course0 + t.y));
+  }
+  for (std::size_t l = 0; l < layout.loops.size(); ++l) {
+    const auto& loop = layout.loops[l];
+    const auto [pi, pj] = owner[l];
+    if (pi < 0 || !as_tiled[l]) continue;
+    const int dc = loop.course - repeat.course0, dw = loop.wale - repeat.wale0;
+    const int tc = dc - floor_div(dc, repeat.courses) * repeat.courses, tw = dw - floor_div(dw, repeat.wales) * repeat.wales;
+    const long cls = g(repeat.course0 + tc, repeat.wale0 + tw);
+    // Tiled only where the loop and its neighbours two loops round are each laid out as
+    // their tile loops: the tile's shape then fits among them (a selvedge loop, or one
+    // beside a band of another stitch, is not).
+    bool alike_round = true;
+    for (int u = -2; alike_round && u <= 2; ++u)
+      for (int v = -2; alike_round && v <= 2; ++v) {
+        const long other = g(loop.course + u, loop.wale + v);
+        alike_round = other >= 0 && as_tiled[static_cast<std::size_t>(other)];
+      }
+    if (!alike_round) continue;
+    const auto t = static_cast<std::size_t>(tile_loop[static_cast<std::size_t>(cls)]);
+    const auto [tp, tj] = where_in_tile[t];
+    const auto& fabric_piece = chains[static_cast<std::size_t>(pi)];
+    const auto& rest_run = tile_pieces[tp];
+    const auto& relaxed_run = relaxed_tile.pieces[tp];
+    const auto J = static_cast<std::size_t>(pj);
+    const std::size_t f = fabric_piece.loop_first[J], tf = rest_run.loop_first[tj];
+    if (rest_run.loop_last[tj] - tf != fabric_piece.loop_last[J] - f) continue;
+    // The loop's points, and those on to the next loop's first (the yarn between a knit
+    // and a purl, a float) when the tile has as many there: in the tile the next loop is
+    // the run's next, or the image of its first a period on.
+    std::size_t n = fabric_piece.loop_last[J] - f;
+    const std::size_t tile_next = tj + 1 < rest_run.loops.size() ? rest_run.loop_first[tj + 1] : run_period_end[tp];
+    // Laid out alike, the tile's points the fabric's moved by a lattice step.
+    const glm::dvec3 shift = fabric_piece.data_points[f] - rest_run.data_points[tf];
+    // (The refined points of a loop near a selvedge stray a little from its tile loop's:
+    // the interpolation is global. The yarn between loops must be the tile's closely.)
+    auto alike = [&](std::size_t from, std::size_t to, double tolerance) {
+      for (std::size_t k = from; k <= to; ++k)
+        if (glm::distance(fabric_piece.data_points[f + k], rest_run.data_points[tf + k] + shift) > tolerance * layout.loop_width)
+          return false;
+      return true;
+    };
+    if (!alike(0, n, 1e-2)) continue;
+    if (J + 1 < fabric_piece.loops.size() && tile_next > tf + n && tile_next <= rest_run.data_points.size() &&
+        fabric_piece.loop_first[J + 1] - f == tile_next - tf && alike(n + 1, tile_next - tf - 1, 1e-3))
+      n = tile_next - tf - 1;
+    for (std::size_t k = 0; k <= n; ++k) {
+      const glm::dvec3& at = rest_run.data_points[tf + k];
+      local[static_cast<std::size_t>(pi)][f + k] = relaxed_run.data_points[tf + k] - at - affine(at);
+      tiled[static_cast<std::size_t>(pi)][f + k] = 1;
+    }
+    loop_tiled[l] = 1;
+  }
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    auto& move = local[i];
+    const auto& mark = tiled[i];
+    long last = -1;
+    for (std::size_t k = 0; k <= move.size(); ++k) {
+      if (k < move.size() && !mark[k]) continue;
+      // Points last+1 .. k-1 lie between tiled points last and k (either may be missing).
+      for (long u = last + 1; u < static_cast<long>(k); ++u) {
+        const auto U = static_cast<std::size_t>(u);
+        if (last >= 0 && k < move.size()) {
+          const double t = static_cast<double>(u - last) / static_cast<double>(static_cast<long>(k) - last);
+          move[U] = (1.0 - t) * move[static_cast<std::size_t>(last)] + t * move[k];
+        } else if (last >= 0) {
+          move[U] = move[static_cast<std::size_t>(last)];
+        } else if (k < move.size()) {
+          move[U] = move[k];
+        }
+      }
+      last = static_cast<long>(k);
+    }
+  }
+
+  // Held: the tiled loops with nothing untiled within the edge band, and what lies
+  // between two of them along the yarn where the tile gave it (not blended).
+  std::vector<std::uint8_t> loop_held(layout.loops.size(), 0);
+  for (std::size_t l = 0; l < layout.loops.size(); ++l) {
+    if (!loop_tiled[l]) continue;
+    bool inside = true;
+    const auto& loop = layout.loops[l];
+    for (int dc = -edge_band; inside && dc <= edge_band; ++dc)
+      for (int dw = -edge_band; inside && dw <= edge_band; ++dw) {
+        const long other = g(loop.course + dc, loop.wale + dw);
+        inside = other >= 0 && loop_tiled[static_cast<std::size_t>(other)];
+      }
+    loop_held[l] = inside ? 1 : 0;
+  }
+  Start start;
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    const auto& piece = chains[i];
+    std::vector<std::uint8_t> held(piece.data_points.size(), 0), on_loop(piece.data_points.size(), 0);
+    for (std::size_t j = 0; j < piece.loops.size(); ++j)
+      for (std::size_t k = piece.loop_first[j]; k <= piece.loop_last[j]; ++k) {
+        on_loop[k] = 1;
+        held[k] = loop_held[static_cast<std::size_t>(piece.loops[j])];
+      }
+    long last_on = -1;  // the last point on a loop, and whether it was held
+    for (std::size_t k = 0; k < held.size(); ++k) {
+      if (on_loop[k]) {
+        if (held[k] && last_on >= 0 && held[static_cast<std::size_t>(last_on)])
+          for (std::size_t u = static_cast<std::size_t>(last_on) + 1; u < k; ++u) held[u] = tiled[i][u];  // not if blended
+        last_on = static_cast<long>(k);
+      }
+    }
+    for (std::size_t k = 0; k < held.size(); ++k) {
+      const glm::dvec3& p = piece.data_points[k];
+      start.pos.push_back(p + affine(p) + local[i][k]);
+      start.held.push_back(held[k]);
+    }
+  }
+
+  free_where_held_overlap(chains, sizes, start);
+  // Tiling jumps the yarn to where the tile put it, with no sweep between to keep its
+  // crossings: it must not leave the yarns deeper into each other than the layout did
+  // (pushed back out, a deep overlap may come out on the wrong side). Where it would (the
+  // tuck's held loops, blended over the edges), the whole fabric is relaxed instead.
+  {
+    Chains c = chains_of(layout, chains, sizes, Boundary::free);
+    Contacts contacts(glm::dvec2(0.0), contact_margin * c.thickest, false, thread_count(options.threads));
+    contacts.find(c);
+    const double laid = contacts.deepest(c);
+    c.pos = start.pos;
+    for (std::size_t i = 0; i < c.pos.size(); ++i)
+      if (start.held[i]) c.inv_mass[i] = 0.0;
+    contacts.find(c);
+    if (contacts.deepest(c) > laid + deeper_by_tiling * c.thickest_core) return std::nullopt;
+  }
+
+  Options edge_options = options;
+  edge_options.by_repeat = false;
+  Relaxed out = relax_chains(layout, chains, sizes, edge_options, &start);
+  out.stats.repeat_wales = repeat.wales;
+  out.stats.repeat_courses = repeat.courses;
+  out.stats.repeat_iterations = relaxed_tile.stats.iterations;
+  out.stats.held_share = start.held.empty() ? 0.0
+                                            : static_cast<double>(std::count(start.held.begin(), start.held.end(), std::uint8_t{1})) /
+                                                  static_cast<double>(start.held.size());
+  out.stats.start_overlap = std::max(out.stats.start_overlap, relaxed_tile.stats.start_overlap);
+  return out;
+}
+
+}  // namespace knitc::relax

@@ -1,0 +1,44 @@
+// A fabric relaxed by its repeat (issue 16): the smallest block of loops that repeats
+// across a flat fabric's interior is found from the layout, relaxed alone as one tile of
+// an endless fabric (Boundary::periodic), tiled across the fabric, and then the edges
+// (cast-on, bind-off, selvedges) and whatever does not repeat are relaxed against the
+// tiled interior, which is held. Internal to relax/.
+#pragma once
+
+#include <optional>
+
+#include "relax/relax.hpp"
+
+namespace knitc::relax {
+
+// A block of `wales` x `courses` loops whose first loop is at (course0, wale0): every loop
+// of the fabric's interior is laid out as the one a whole number of blocks away, the same
+// stitch, shape, yarn and working direction, its data points the same shape, and the
+// blocks a whole number of loop widths and course spacings apart.
+struct Repeat {
+  int wales = 0, courses = 0;
+  int wale0 = 0, course0 = 0;
+};
+
+// The tile's least size, in loops each way: a repeat smaller than this is taken as many
+// times as it needs (the periodic contacts wrap one repeat each way).
+inline constexpr int least_tile = 4;
+// Loops at most this many loops (across or up) from one that is not tiled stay free in
+// the edges' relaxation; the rest are held where the tile put them.
+inline constexpr int edge_band = 3;
+// Tiled, the yarn may start this many core diameters deeper into another than the layout
+// put it, at most (else the whole fabric is relaxed instead; see relax_by_repeat).
+inline constexpr double deeper_by_tiling = 0.1;
+
+// The tile (a whole number of the smallest repeat, at least least_tile loops each way) of
+// a flat layout's interior (its loops but the first and last two courses and needle
+// positions), if it has one, it fits in the interior, and it has at most half the
+// fabric's loops; none for a fabric with tucks. Linear in the fabric for each repeat size tried (at most 64 each way).
+std::optional<Repeat> find_repeat(const layout::Layout& layout);
+
+// Relaxes `chains` (refined, see refine) by `repeat` with free edges; nothing if the
+// pieces do not follow the layout's loops as the tile needs.
+std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& chains,
+                                       const std::vector<yarn::Size>& sizes, const Options& options, const Repeat& repeat);
+
+}  // namespace knitc::relax
