@@ -19,6 +19,26 @@ CompileOptions relaxed_centrelines(relax::Boundary boundary) {
   return o;
 }
 
+// A jersey swatch relaxed within `boundary`, its inner loops' shape (none if it did not
+// settle).
+measure::LoopShape relaxed_jersey_shape(int stitches, int rows, relax::Boundary boundary) {
+  const Pattern pattern = test::jersey(stitches, rows);
+  const Fabric f = compile(pattern, relaxed_centrelines(boundary));
+  EXPECT_LT(f.relaxation.iterations, relax::Options{}.max_iterations) << "did not settle";
+  if (f.relaxation.iterations >= relax::Options{}.max_iterations) return {};
+  return measure::loop_shape(f.layout, f.pieces);
+}
+
+// Munden's and Knapton's band (below), each factor 5% past it.
+void expect_real_jersey(const measure::LoopShape& shape) {
+  EXPECT_GE(shape.kc, 0.95 * 5.0) << "l " << shape.loop_length << ", course spacing " << shape.course_spacing;
+  EXPECT_LE(shape.kc, 1.05 * 5.5);
+  EXPECT_GE(shape.kw, 0.95 * 3.8) << "l " << shape.loop_length << ", wale spacing " << shape.wale_spacing;
+  EXPECT_LE(shape.kw, 1.05 * 4.2);
+  EXPECT_GE(shape.kc / shape.kw, 1.2);
+  EXPECT_LE(shape.kc / shape.kw, 1.45);
+}
+
 // Plain jersey, its loop length fixed by the layout (W 4, H 4.2, T 2 mm, a 1 mm yarn: l
 // about 15.6 mm), takes a relaxed state of real jersey: kc = l x courses per mm and kw =
 // l x wales per mm from 5% under Munden's dry-relaxed 5.0 and 3.8 to 5% over Knapton's
@@ -28,17 +48,9 @@ CompileOptions relaxed_centrelines(relax::Boundary boundary) {
 // kc 5.26, 5.2% over the dry figure; docs/relaxation.md.) A swatch with free edges, as a
 // designer compiles it (relaxed by its repeat), measured on its inner loops.
 TEST(FabricShape, JerseyTakesARelaxedShapeOfRealJersey) {
-  const Pattern pattern = test::jersey(16, 20);
-  const Fabric f = compile(pattern, relaxed_centrelines(relax::Boundary::free));
-  ASSERT_LT(f.relaxation.iterations, relax::Options{}.max_iterations) << "did not settle";
-  const auto shape = measure::loop_shape(f.layout, f.pieces);
-  ASSERT_GT(shape.loops, 100u);
-  EXPECT_GE(shape.kc, 0.95 * 5.0) << "l " << shape.loop_length << ", course spacing " << shape.course_spacing;
-  EXPECT_LE(shape.kc, 1.05 * 5.5);
-  EXPECT_GE(shape.kw, 0.95 * 3.8) << "l " << shape.loop_length << ", wale spacing " << shape.wale_spacing;
-  EXPECT_LE(shape.kw, 1.05 * 4.2);
-  EXPECT_GE(shape.kc / shape.kw, 1.2);
-  EXPECT_LE(shape.kc / shape.kw, 1.45);
+  const auto shape = relaxed_jersey_shape(16, 20, relax::Boundary::free);
+  EXPECT_GT(shape.loops, 100u);
+  expect_real_jersey(shape);
   RecordProperty("kc", std::to_string(shape.kc));
   RecordProperty("kw", std::to_string(shape.kw));
 }
@@ -47,17 +59,9 @@ TEST(FabricShape, JerseyTakesARelaxedShapeOfRealJersey) {
 // shape in the same band: its size follows the strain the contacts, lengths and bending
 // ask for.
 TEST(FabricShape, AJerseyRepeatTakesTheSameShape) {
-  const Pattern pattern = test::jersey(8, 8);
-  const Fabric f = compile(pattern, relaxed_centrelines(relax::Boundary::periodic));
-  ASSERT_LT(f.relaxation.iterations, relax::Options{}.max_iterations) << "did not settle";
-  const auto shape = measure::loop_shape(f.layout, f.pieces);
-  ASSERT_GT(shape.loops, 10u);
-  EXPECT_GE(shape.kc, 0.95 * 5.0);
-  EXPECT_LE(shape.kc, 1.05 * 5.5);
-  EXPECT_GE(shape.kw, 0.95 * 3.8);
-  EXPECT_LE(shape.kw, 1.05 * 4.2);
-  EXPECT_GE(shape.kc / shape.kw, 1.2);
-  EXPECT_LE(shape.kc / shape.kw, 1.45);
+  const auto shape = relaxed_jersey_shape(8, 8, relax::Boundary::periodic);
+  EXPECT_GT(shape.loops, 10u);
+  expect_real_jersey(shape);
 }
 
 }  // namespace
