@@ -109,7 +109,7 @@ struct Size {
 };
 
 // The boost adapts as in resilient propagation (Riedmiller and Braun): it grows while the
-// motion keeps its sign and halves when it turns, so a fabric drawing in steadily is
+// motion keeps its sign and quarters when it turns, so a fabric drawing in steadily is
 // carried fast and one that has found its size (the bending and the contacts balanced)
 // is not thrown back and forth.
 double adapt(double motion, double& boost, double most, double& last_sign) {
@@ -142,10 +142,9 @@ void boost_size(Chains& c, const std::vector<glm::dvec3>& before, Size& size, co
   }
   double grow_w = size.free_width && wd > 0.0 ? std::clamp(adapt(wn / wd, size.boost.x, size.most.x, size.last_sign.x), -0.01, 0.01) : 0.0;
   double grow_h = size.free_height && hd > 0.0 ? std::clamp(adapt(hn / hd, size.boost.y, size.most.y, size.last_sign.y), -0.01, 0.01) : 0.0;
-  // (Its strain, too, is carried further while it keeps its sign: a rib drawing in over
-  // hundreds of sweeps.)
-  // The strain asked is noisy from sweep to sweep (a contact list rebuilt, a crossing
-  // pushed back): its sign is read from a running mean.
+  // A periodic repeat's strain, too, is carried further while it keeps its sign (a rib
+  // draws in over hundreds of sweeps); it is noisy from sweep to sweep (a contact list
+  // rebuilt, a crossing pushed back), so its sign is read from a running mean.
   auto periodic_growth = [&](double stretch, double lever, double& mean, double& boost, double most, double& last_sign) {
     if (lever <= 0.0) return 0.0;
     const double strain = stretch / lever;

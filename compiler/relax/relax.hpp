@@ -16,7 +16,7 @@
 //     the face, the one in front stays in front (flat work);
 //   - length: every segment keeps its length;
 //   - bending: an elastic rod whose rest shape is straight: every three points a step
-//     toward their chord, keeping their centroid; no bend tighter than 1.2 core radii;
+//     toward their chord, keeping their centroid; no bend tighter than 1.2 free radii;
 //   - size: the swatch's change of width and height, sped up; a periodic repeat's from
 //     the strain its constraints ask for (see relax.cpp).
 // The contacts are found with a grid of cells about two diameters wide, rebuilt when some
@@ -60,7 +60,7 @@ inline constexpr double contact_margin = 0.25;       // contact pairs are listed
 inline constexpr double shell_exponent = 2.6;        // p of the pressure law: 2.4 (acrylic) to 2.9 (cotton), Singal et al.
 inline constexpr double shell_rate = 0.02;           // a shell's push a sweep, of its thickness, per unit of pressure
 inline constexpr double bending_stiffness = 0.3;     // of the way to straight, every three points a sweep
-inline constexpr double tightest_bend_radii = 1.2;   // no chain bends tighter than this many core radii
+inline constexpr double tightest_bend_radii = 1.2;   // no chain bends tighter than this many free radii
 inline constexpr double size_gain = 1024.0;          // the size boost per loop across (see relax.cpp)
 inline constexpr int ramp_sweeps = 10;               // the contact distance reaches the radii over this many sweeps
 inline constexpr double settled_pushes = 3.0;        // done once no push is deeper than this many tolerances

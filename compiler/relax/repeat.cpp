@@ -299,9 +299,8 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
     const auto& loop = layout.loops[l];
     const auto [pi, pj] = owner[l];
     if (pi < 0 || !as_tiled[l]) continue;
-    const int dc = loop.course - repeat.course0, dw = loop.wale - repeat.wale0;
-    const int tc = dc - floor_div(dc, repeat.courses) * repeat.courses, tw = dw - floor_div(dw, repeat.wales) * repeat.wales;
-    const long cls = g(repeat.course0 + tc, repeat.wale0 + tw);
+    const glm::ivec2 place = tile_place(loop);
+    const long cls = g(repeat.course0 + place.y, repeat.wale0 + place.x);
     // Tiled only where the loop and its neighbours two loops round are each laid out as
     // their tile loops: the tile's shape then fits among them (a selvedge loop, or one
     // beside a band of another stitch, is not).
