@@ -306,5 +306,42 @@ TEST(Crossings, CountsOverAndUnderAndSeesAFlip) {
   EXPECT_EQ(lost.lost, 1u);
 }
 
+// Two yarns laid through one point, each bending there (as a twisted stitch's legs are
+// laid), cross once, however the point's coordinates round.
+TEST(Crossings, AThroughPointCountsOnce) {
+  int wrong = 0;
+  for (int k = 1; k <= 500; ++k) {
+    const glm::dvec3 p(0.0137 * k, 0.0071 * k, 0.0);
+    yarn_paths::Piece a, b;
+    a.data_points = {p + glm::dvec3(-1.1, -0.3, 0.5), p + glm::dvec3(0, 0, 0.5), p + glm::dvec3(0.9, 0.4, 0.5)};
+    b.data_points = {p + glm::dvec3(-0.3, 1.1, 0), p, p + glm::dvec3(0.4, -0.9, 0)};
+    wrong += measure::crossings({a, b}).size() == 1u ? 0 : 1;
+  }
+  EXPECT_EQ(wrong, 0);
+}
+
+// A pair of crossings slid in beside a crossing of the same two yarns, the other one in
+// front at both (Reidemeister's second move), is not the crossing flipped: the crossing
+// slid along and is kept, and the pair is new, together.
+TEST(Crossings, APairSlidInBesideACrossingIsNoFlip) {
+  yarn_paths::Piece across, wave;
+  for (int i = 0; i <= 20; ++i) across.data_points.push_back({i * 0.5, 0.0, 0.0});
+  wave.data_points = {{1.0, -1.0, 0.5}, {1.4, 1.0, 0.5}, {4.0, 1.0, 0.5}};  // in front, near x = 1.2
+  const auto before = measure::crossings({across, wave});
+  ASSERT_EQ(before.size(), 1u);
+  // Behind at x = 1.1 and 1.6 (the pair), then in front at x = 2.6 (the crossing, slid).
+  wave.data_points = {{1.1, -1.0, -0.5}, {1.1, 1.0, -0.5}, {1.6, 1.0, -0.5}, {1.6, -1.0, -0.5}, {2.0, -1.0, 0.5}, {3.2, 1.0, 0.5}};
+  const auto after = measure::crossings({across, wave});
+  ASSERT_EQ(after.size(), 3u);
+  const auto c = measure::compare(before, after, 12);
+  EXPECT_EQ(c.flipped, 0u);
+  EXPECT_EQ(c.kept, 1u);
+  EXPECT_EQ(c.found, 2u);
+  EXPECT_EQ(c.found_alone, 0u);
+  // Flipped for real, the crossing still shows.
+  wave.data_points = {{1.0, -1.0, -0.5}, {1.4, 1.0, -0.5}, {4.0, 1.0, -0.5}};
+  EXPECT_EQ(measure::compare(before, measure::crossings({across, wave}), 12).flipped, 1u);
+}
+
 }  // namespace
 }  // namespace knitc

@@ -65,8 +65,11 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
     if (std::abs(denom) < 1e-12 * (glm::dot(r, r) + glm::dot(s, s))) continue;  // parallel
     const glm::dvec2 qp = q - p;
     const double t = (qp.x * s.y - qp.y * s.x) / denom, u = (qp.x * r.y - qp.y * r.x) / denom;
-    // Half-open, so a crossing through a shared point counts once.
-    if (t < 0.0 || t >= 1.0 || u < 0.0 || u >= 1.0) continue;
+    // Half-open, so a crossing through a shared point counts once: on the segments that
+    // start there, with a rounding's slack (two yarns laid through one point, as a twisted
+    // stitch's legs are, would otherwise count twice or not at all).
+    const double slack = 1e-9;
+    if (t < -slack || t >= 1.0 - slack || u < -slack || u >= 1.0 - slack) continue;
     const double za = a.p.z + t * (a.q.z - a.p.z), zb = b.p.z + u * (b.q.z - b.p.z);
     out.push_back({a.piece, a.index, b.piece, b.index, za - zb});
   }
@@ -96,19 +99,26 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
       continue;
     }
   }
-  // Every candidate match, nearest first (then in order): taken when both ends are free.
+  // Every candidate match, the same yarn in front first, then nearest first (then in
+  // order): taken when both ends are free. Where two yarns cross several times within the
+  // window, a pair slid in beside a crossing (the other yarn in front at both) must not
+  // take the crossing's place: matched by distance alone, the crossing would count as
+  // flipped and its true match as new. A real flip still shows: its crossing matches the
+  // other way, or its leftovers pair with nothing.
   struct Candidate {
+    bool flips;
     std::uint32_t distance;
     std::size_t from, to;
   };
   std::vector<Candidate> candidates;
   for (std::size_t i = 0; i < before.size(); ++i) {
     near(after, before[i], window, [&](std::size_t j) {
-      candidates.push_back({gap(after[j].segment_a, before[i].segment_a) + gap(after[j].segment_b, before[i].segment_b), i, j});
+      candidates.push_back({(before[i].depth > 0.0) != (after[j].depth > 0.0),
+                            gap(after[j].segment_a, before[i].segment_a) + gap(after[j].segment_b, before[i].segment_b), i, j});
     });
   }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-    return std::tie(x.distance, x.from, x.to) < std::tie(y.distance, y.from, y.to);
+    return std::tie(x.flips, x.distance, x.from, x.to) < std::tie(y.flips, y.distance, y.from, y.to);
   });
   std::vector<char> matched_before(before.size(), 0), matched_after(after.size(), 0);
   for (const Candidate& c : candidates) {
