@@ -23,12 +23,11 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
-#include <glm/common.hpp>
 
 #include "bench.hpp"
+#include "stats.hpp"
 #include "compile.hpp"
 #include "measure/measure.hpp"
-#include "mesh/bounds.hpp"
 #include "render.hpp"
 #include "runtime.hpp"
 #include "language/chart.hpp"
@@ -138,55 +137,6 @@ int write(const std::vector<knitc::writers::OutputFile>& files) {
     report(std::string("knitc: ") + e.what());
     return exit_io;
   }
-}
-
-void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, double relax_seconds) {
-  std::size_t vertices = 0, elements = 0;
-  for (const auto& p : fabric.mesh.primitives) {
-    vertices += p.positions.size();
-    elements += p.indices.size();
-  }
-  const knitc::mesh::Bounds box = knitc::mesh::bounds(fabric.mesh);
-  const glm::vec3 lo = box.min, hi = box.max;
-  std::size_t samples = 0;
-  for (const auto& piece : fabric.pieces) samples += piece.samples.size();
-  fmt::print(stderr, "pattern     {}\n", pattern.name);
-  fmt::print(stderr, "courses     {}\nwales       {}\nloops       {}\n", fabric.layout.courses, fabric.layout.wales,
-             fabric.layout.loops.size());
-  fmt::print(stderr, "yarn pieces {}\nsamples     {}\nvertices    {}\nindices     {}\n", fabric.pieces.size(), samples,
-             vertices, elements);
-  fmt::print(stderr, "bounds mm   [{:.3f}, {:.3f}, {:.3f}] .. [{:.3f}, {:.3f}, {:.3f}]\n", lo.x, lo.y, lo.z, hi.x, hi.y,
-             hi.z);
-  const auto m = knitc::measure::measure(pattern, fabric.layout, fabric.pieces);
-  for (std::size_t y = 0; y < pattern.yarns.size(); ++y)
-    fmt::print(stderr, "yarn {:<7} {:.1f} mm long; free diameter {:.3f} mm, core {:.3f} mm\n", pattern.yarns[y].id,
-               m.yarn_length[y], pattern.yarns[y].diameter, pattern.yarns[y].core_diameter);
-  fmt::print(stderr, "penetration {:.3f} d (deepest overlap of two yarn tubes; the seed paper's loop overlaps by about 0.85 d)\n",
-             m.deepest_penetration);
-  fmt::print(stderr, "cores       {:.3f} core d (deepest overlap of two yarn cores, which never compress)\n",
-             m.deepest_core_penetration);
-  fmt::print(stderr, "tightest bend {:.3f} tube radii (smallest radius of curvature over the tube's radius)\n", m.tightest_bend);
-  fmt::print(stderr, "frame turn  {:.1f} deg (largest between consecutive sweep frames)\n", m.largest_frame_turn);
-  if (const auto shape = knitc::measure::loop_shape(fabric.layout, fabric.pieces); shape.loops > 0)
-    fmt::print(stderr, "loop shape  l {:.2f} mm, wale spacing {:.2f} mm, course spacing {:.2f} mm: kc {:.2f}, kw {:.2f}, kc/kw {:.2f} ({} inner loops)\n",
-               shape.loop_length, shape.wale_spacing, shape.course_spacing, shape.kc, shape.kw, shape.kc / shape.kw, shape.loops);
-  if (const auto shape = knitc::measure::loop_shape(fabric.layout, fabric.pieces); shape.loops > 0)
-    fmt::print(stderr, "in the plane {:.2f} mm across a wale, {:.2f} mm up a course; centrelines {:.2f} mm deep\n", shape.wale_pitch,
-               shape.course_pitch, shape.depth);
-  if (fabric.relaxed) {
-    const auto& r = fabric.relaxation;
-    fmt::print(stderr, "relaxation  {} iterations, {:.2f} s; cores overlap {:.3f} core d before, {:.3f} after; lengths changed <= {:.2f}%; "
-               "pressed shells squeezed {:.0f}% on average\n",
-               r.iterations, relax_seconds, r.start_overlap, r.end_overlap, 100.0 * r.length_change, 100.0 * r.compression);
-    if (r.repeat_wales > 0)
-      fmt::print(stderr, "by repeat   a tile of {} x {} loops relaxed in {} sweeps, tiled; {:.0f}% of the yarn held, the rest relaxed in {} sweeps\n",
-                 r.repeat_wales, r.repeat_courses, r.repeat_iterations, 100.0 * r.held_share, r.iterations);
-  } else {
-    fmt::print(stderr, "relaxation  off\n");
-  }
-  if (m.tightest_bend < 1.0)
-    fmt::print(stderr, "knitc: warning: a yarn bends tighter than its own radius ({:.2f} tube radii): the tube folds on itself there\n",
-               m.tightest_bend);
 }
 
 struct Compiled {

@@ -207,6 +207,60 @@ TEST(Tube, PliesTwistAsAskedAndStayInsideTheYarn) {
   for (std::size_t i = 1; i < piece.arc_length.size(); ++i) EXPECT_LE(piece.arc_length[i] - piece.arc_length[i - 1], 10.0 / 12.0 + 1e-6);
 }
 
+// A round yarn pressed (relax/press.hpp) flattens to an ellipse of its own area, its
+// minor axis along the pressing; where the pressing turns half a turn (the same ellipse)
+// the ring does not spin, and where it stops the ring turns back round.
+TEST(Tube, APressedRoundYarnFlattensAcrossThePressingKeepingItsArea) {
+  sweep::Frames f;
+  std::vector<double> s;
+  std::vector<glm::dvec3> pressed;
+  const glm::dvec3 at_45 = glm::normalize(glm::dvec3(0.0, 1.0, 1.0));
+  for (int i = 0; i < 8; ++i) {
+    f.origin.push_back({i * 0.5, 0.0, 0.0});
+    f.tangent.push_back({1.0, 0.0, 0.0});
+    f.normal.push_back({0.0, 1.0, 0.0});
+    f.binormal.push_back({0.0, 0.0, 1.0});
+    s.push_back(i * 0.5);
+    pressed.push_back(i < 6 ? (i % 2 ? -0.36 : 0.36) * at_45 : glm::dvec3(0.0));  // aspect 0.64, then round
+  }
+  sweep::CrossSection round;
+  round.radius = 0.5;
+  const auto strands = sweep::strands(f, s, round, pressed);
+  ASSERT_EQ(strands.size(), 1u);
+  mesh::Primitive prim;
+  prim.mode = mesh::Mode::triangles;
+  const int sides = 64;
+  sweep::append_tubes(strands, s, sides, prim);
+  for (int i = 0; i < 8; ++i) {
+    // The ring's extent along the pressing and across it, and its area (a polygon).
+    double along = 0.0, across = 0.0, area = 0.0;
+    const glm::dvec3 other = glm::cross(glm::dvec3(1, 0, 0), at_45);
+    for (int k = 0; k < sides; ++k) {
+      const glm::dvec3 p = glm::dvec3(prim.positions[static_cast<std::size_t>(i * (sides + 1) + k)]) - f.origin[static_cast<std::size_t>(i)];
+      const glm::dvec3 q = glm::dvec3(prim.positions[static_cast<std::size_t>(i * (sides + 1) + (k + 1) % sides)]) - f.origin[static_cast<std::size_t>(i)];
+      along = std::max(along, std::abs(glm::dot(p, at_45)));
+      across = std::max(across, std::abs(glm::dot(p, other)));
+      area += 0.5 * glm::dot(glm::cross(p, q), glm::dvec3(1, 0, 0));
+    }
+    const double expected_area = std::numbers::pi * 0.25 * std::sin(2 * std::numbers::pi / sides) * sides / (2 * std::numbers::pi);
+    EXPECT_NEAR(area, expected_area, 1e-4) << "ring " << i;
+    if (i < 6) {
+      EXPECT_NEAR(along, 0.5 * 0.8, 1e-3) << "ring " << i;   // r sqrt(aspect)
+      EXPECT_NEAR(across, 0.5 / 0.8, 1e-3) << "ring " << i;  // r / sqrt(aspect)
+    } else {
+      EXPECT_NEAR(along, 0.5, 1e-3) << "ring " << i;
+      EXPECT_NEAR(across, 0.5, 1e-3) << "ring " << i;
+    }
+    // The frame turns only to follow the pressing: not half a turn where its sign flips.
+    if (i > 0) {
+      const auto& n = strands[0].frames.normal;
+      EXPECT_GT(glm::dot(n[static_cast<std::size_t>(i)], n[static_cast<std::size_t>(i - 1)]), 0.99) << "ring " << i;
+    }
+  }
+  // No pressing given: the round tube as ever.
+  EXPECT_TRUE(sweep::strands(f, s, round)[0].axes.empty());
+}
+
 TEST(Tube, WireframeHasRingsAndLongEdges) {
   CompileOptions o;
   o.view = View::wireframe;

@@ -46,6 +46,18 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
   piece.arc_length.assign(piece.samples.size(), 0.0);
   for (std::size_t i = 1; i < piece.samples.size(); ++i)
     piece.arc_length[i] = piece.arc_length[i - 1] + nurbs::segment_length(piece.curve.curve, piece.samples[i - 1], piece.samples[i]);
+  if (piece.path.pressed.size() == u.size()) {
+    const auto& at = piece.path.pressed;
+    piece.pressed.resize(piece.samples.size());
+    std::size_t k = 0;  // the data points' span [u[k], u[k + 1]] holding the sample
+    for (std::size_t i = 0; i < piece.samples.size(); ++i) {
+      const double x = piece.samples[i];
+      while (k + 2 < u.size() && u[k + 1] <= x) ++k;
+      const double span = u[k + 1] - u[k];
+      const double t = span > 0.0 ? std::clamp((x - u[k]) / span, 0.0, 1.0) : 0.0;
+      piece.pressed[i] = (1.0 - t) * at[k] + t * at[k + 1];
+    }
+  }
   return piece;
 }
 

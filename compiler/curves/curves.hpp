@@ -20,6 +20,9 @@ struct CurvePiece {
   std::vector<double> samples;  // curve parameters, increasing
   sweep::Frames frames;         // one per sample; frames.origin are the centreline samples
   std::vector<double> arc_length;  // the yarn's length in mm from the piece's start, per sample
+  // Per sample, when path.pressed is given (else empty): its pressing, interpolated
+  // linearly in the curve's parameter between the data points'.
+  std::vector<glm::dvec3> pressed;
   // Loop j of the piece owns samples [loop_samples[j].first, loop_samples[j].second]
   // (both ends: loops that meet share their join sample). Size: path.loops.size().
   std::vector<std::pair<std::size_t, std::size_t>> loop_samples;

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "parallel.hpp"
+#include "relax/press.hpp"
 #include "relax/chains.hpp"
 #include "relax/contacts.hpp"
 #include "relax/repeat.hpp"
@@ -206,10 +207,15 @@ double length_change(const Chains& c) {
 
 Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<yarn::Size>& sizes,
               const Options& options) {
-  if (options.by_repeat && options.boundary == Boundary::free && layout.knitting == Knitting::flat)
-    if (const auto repeat = find_repeat(layout))
-      if (auto out = relax_by_repeat(layout, pieces, sizes, options, *repeat)) return std::move(*out);
-  return relax_chains(layout, std::move(pieces), sizes, options, nullptr);
+  auto relaxed = [&]() -> Relaxed {
+    if (options.by_repeat && options.boundary == Boundary::free && layout.knitting == Knitting::flat)
+      if (const auto repeat = find_repeat(layout))
+        if (auto out = relax_by_repeat(layout, pieces, sizes, options, *repeat)) return std::move(*out);
+    return relax_chains(layout, std::move(pieces), sizes, options, nullptr);
+  };
+  Relaxed out = relaxed();
+  press(out.pieces, sizes, thread_count(options.threads));
+  return out;
 }
 
 Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<yarn::Size>& sizes,

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "mesh/mesh.hpp"
@@ -68,11 +69,17 @@ struct CrossSection {
 struct Strand {
   Frames frames;
   double along_normal = 0.5, along_binormal = 0.5;
+  std::vector<glm::dvec2> axes;  // per frame, over the two above (empty: those): along normal, binormal
 };
 
 // The strands of a cross-section along the frames: one for a circle or an ellipse, one
-// per ply. `arc_length` holds the yarn's length in mm at each frame.
-std::vector<Strand> strands(const Frames& frames, std::span<const double> arc_length, const CrossSection& section);
+// per ply. `arc_length` holds the yarn's length in mm at each frame. `pressed`, per frame
+// or empty: the direction the yarn is pressed from, across it, of length 1 - aspect (< 1);
+// there a circle flattens to an ellipse of its area whose minor axis lies along it, the
+// axis kept where the yarn is not pressed (relax/press.hpp). Ellipse and plied sections
+// keep their own shape.
+std::vector<Strand> strands(const Frames& frames, std::span<const double> arc_length, const CrossSection& section,
+                            std::span<const glm::dvec3> pressed = {});
 
 // Appends each strand as a closed tube to a triangle primitive: rings of `sides` vertices
 // (plus a seam vertex repeating the first, for the texture's v = 1), quads between rings,

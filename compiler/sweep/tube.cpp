@@ -30,6 +30,30 @@ Frames flattened(const Frames& f, const dvec3& flat) {
   return out;
 }
 
+// A round section pressed flat where `pressed` says (see strands): the frames turned by
+// the angle of the minor axis in the (normal, binormal) plane, kept where not pressed and
+// taken the nearest way round (an ellipse turned half a turn is itself).
+Strand pressed_circle(const Frames& f, double r, std::span<const dvec3> pressed) {
+  Strand out{f, r, r, std::vector<glm::dvec2>(f.size(), glm::dvec2(r))};
+  double theta = 0.0;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const dvec3& v = pressed[i];
+    const double amount = glm::length(v);
+    if (amount > 1e-9) {
+      double target = std::atan2(glm::dot(v, f.binormal[i]), glm::dot(v, f.normal[i]));
+      while (target - theta > 0.5 * std::numbers::pi) target -= std::numbers::pi;
+      while (target - theta < -0.5 * std::numbers::pi) target += std::numbers::pi;
+      theta = target;
+    }
+    const dvec3 n = std::cos(theta) * f.normal[i] + std::sin(theta) * f.binormal[i];
+    out.frames.normal[i] = n;
+    out.frames.binormal[i] = glm::cross(f.tangent[i], n);
+    const double root = std::sqrt(1.0 - std::min(amount, 0.95));
+    out.axes[i] = glm::dvec2(r * root, r / root);  // the minor axis along the pressing
+  }
+  return out;
+}
+
 // The centre line of ply k of n: a helix about the yarn's centreline at distance
 // `offset`, turning `twist` times per mm in the rotation-minimising frame.
 Frames ply(const Frames& f, std::span<const double> s, int k, int n, double offset, double twist) {
@@ -86,9 +110,10 @@ struct Cursor {
 std::uint32_t write_rings(const Strand& strand, std::span<const double> s, const Trig& trig, Cursor& c) {
   const Frames& f = strand.frames;
   const int sides = static_cast<int>(trig.cosines.size());
-  const double a = strand.along_normal, b = strand.along_binormal;
   const auto first = static_cast<std::uint32_t>(c.vertex);
   for (std::size_t i = 0; i < f.size(); ++i) {
+    const double a = strand.axes.empty() ? strand.along_normal : strand.axes[i].x;
+    const double b = strand.axes.empty() ? strand.along_binormal : strand.axes[i].y;
     const std::uint32_t ring = static_cast<std::uint32_t>(c.vertex);
     for (int k = 0; k < sides; ++k) {
       const double ck = trig.cosines[k], sk = trig.sines[k];
@@ -117,15 +142,19 @@ void write_cap(const Frames& f, std::size_t ring, std::uint32_t rim, int sides, 
 
 }  // namespace
 
-std::vector<Strand> strands(const Frames& f, std::span<const double> s, const CrossSection& section) {
+std::vector<Strand> strands(const Frames& f, std::span<const double> s, const CrossSection& section,
+                            std::span<const dvec3> pressed) {
   assert(f.size() == s.size());
+  assert(pressed.empty() || pressed.size() == f.size());
   const double r = section.radius;
   switch (section.shape) {
-    case CrossSection::Shape::circle: return {Strand{f, r, r}};
+    case CrossSection::Shape::circle:
+      if (!pressed.empty()) return {pressed_circle(f, r, pressed)};
+      return {Strand{f, r, r, {}}};
     case CrossSection::Shape::ellipse: {
       // Same area as the circle: major r / sqrt(aspect) in the fabric, minor r sqrt(aspect) across it.
       const double root = std::sqrt(section.aspect);
-      return {Strand{flattened(f, section.flat_normal), r / root, r * root}};
+      return {Strand{flattened(f, section.flat_normal), r / root, r * root, {}}};
     }
     case CrossSection::Shape::plied: {
       const int n = section.plies;
@@ -133,7 +162,7 @@ std::vector<Strand> strands(const Frames& f, std::span<const double> s, const Cr
       const double gap = std::sin(std::numbers::pi / n);
       const double ply_radius = r / (1.0 + 1.0 / gap), offset = ply_radius / gap;
       std::vector<Strand> out;
-      for (int k = 0; k < n; ++k) out.push_back({ply(f, s, k, n, offset, section.twist), ply_radius, ply_radius});
+      for (int k = 0; k < n; ++k) out.push_back({ply(f, s, k, n, offset, section.twist), ply_radius, ply_radius, {}});
       return out;
     }
   }
@@ -190,10 +219,10 @@ void append_wireframe(std::span<const Strand> strands, int sides, mesh::Primitiv
     const Frames& f = strand.frames;
     const auto base = static_cast<std::uint32_t>(out.positions.size());
     for (std::size_t i = 0; i < f.size(); ++i) {
-      for (int k = 0; k < sides; ++k) {
-        out.positions.emplace_back(f.origin[i] + strand.along_normal * trig.cosines[k] * f.normal[i] +
-                                   strand.along_binormal * trig.sines[k] * f.binormal[i]);
-      }
+      const double a = strand.axes.empty() ? strand.along_normal : strand.axes[i].x;
+      const double b = strand.axes.empty() ? strand.along_binormal : strand.axes[i].y;
+      for (int k = 0; k < sides; ++k)
+        out.positions.emplace_back(f.origin[i] + a * trig.cosines[k] * f.normal[i] + b * trig.sines[k] * f.binormal[i]);
     }
     for (std::size_t i = 0; i < f.size(); ++i) {
       const auto row = base + static_cast<std::uint32_t>(i * sides);

@@ -113,7 +113,7 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
     parallel_for(pieces.size(), thread_count(threads), [&](std::size_t i) {
       const curves::CurvePiece& p = pieces[i];
       const Yarn& yarn = yarns[p.path.yarn];
-      const auto strands = sweep::strands(p.frames, p.arc_length, cross_section(yarn));
+      const auto strands = sweep::strands(p.frames, p.arc_length, cross_section(yarn), p.pressed);
       sweep::write_tubes(strands, p.arc_length, ring_sides(yarn, sides), by_yarn[p.path.yarn], vertex_at[i], index_at[i]);
     });
     for (auto& prim : by_yarn) {
@@ -127,7 +127,7 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
     const curves::CurvePiece& p = pieces[i];
     const Yarn& yarn = yarns[p.path.yarn];
     lines[i].mode = mode;
-    sweep::append_wireframe(sweep::strands(p.frames, p.arc_length, cross_section(yarn)), ring_sides(yarn, sides), lines[i]);
+    sweep::append_wireframe(sweep::strands(p.frames, p.arc_length, cross_section(yarn), p.pressed), ring_sides(yarn, sides), lines[i]);
   });
   for (std::size_t y = 0; y < yarns.size(); ++y) {
     mesh::Primitive prim;

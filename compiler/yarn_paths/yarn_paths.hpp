@@ -27,6 +27,9 @@ struct Piece {
   // the selvedge and tails.
   std::vector<int> loops;
   std::vector<std::size_t> loop_first, loop_last;
+  // Once relaxed, per data point (else empty: round): the direction the yarn is pressed
+  // from, across it, of length 1 - its section's aspect (relax/press.hpp).
+  std::vector<glm::dvec3> pressed;
 };
 
 inline constexpr int points_per_loop = layout::loop_points - 1;

@@ -1,0 +1,136 @@
+#include "relax/press.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "parallel.hpp"
+#include "spatial/columns.hpp"
+
+namespace knitc::relax {
+
+namespace {
+
+// The points of every piece in one array, with what a contact needs to know of each.
+struct Points {
+  std::vector<glm::dvec3> pos;
+  std::vector<double> along;            // mm along its piece
+  std::vector<double> free_r, shell;    // free radius, and free minus core radius, mm
+  std::vector<std::uint32_t> piece;
+  std::vector<std::size_t> first;       // per piece, then the end
+};
+
+Points points_of(const std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes) {
+  Points p;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    p.first.push_back(p.pos.size());
+    const yarn::Size& size = sizes[static_cast<std::size_t>(pieces[i].yarn)];
+    double s = 0.0;
+    for (std::size_t k = 0; k < pieces[i].data_points.size(); ++k) {
+      if (k > 0) s += glm::distance(pieces[i].data_points[k - 1], pieces[i].data_points[k]);
+      p.pos.push_back(pieces[i].data_points[k]);
+      p.along.push_back(s);
+      p.free_r.push_back(0.5 * size.free_diameter);
+      p.shell.push_back(0.5 * (size.free_diameter - size.core_diameter));
+      p.piece.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  p.first.push_back(p.pos.size());
+  return p;
+}
+
+// The unit tangent at point k of the piece running over [from, to).
+glm::dvec3 tangent(const Points& p, std::size_t k, std::size_t from, std::size_t to) {
+  const std::size_t a = k > from ? k - 1 : k, b = k + 1 < to ? k + 1 : k;
+  const glm::dvec3 d = p.pos[b] - p.pos[a];
+  const double l = glm::length(d);
+  return l > 0.0 ? d / l : glm::dvec3(0.0);
+}
+
+}  // namespace
+
+void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes, int threads) {
+  const Points p = points_of(pieces, sizes);
+  const std::size_t n = p.pos.size();
+  std::vector<glm::dvec3> pressed(n, glm::dvec3(0.0));
+  double thickest = 0.0, longest = 0.0;
+  for (std::size_t i = 0; i < n; ++i) thickest = std::max(thickest, 2.0 * p.free_r[i]);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    if (p.piece[i] == p.piece[i + 1]) longest = std::max(longest, glm::distance(p.pos[i], p.pos[i + 1]));
+  if (thickest > 0.0 && n > 1) {
+    // Segments by their midpoints: a cell holds every segment a point's free surface can
+    // reach from the next cell.
+    spatial::Columns grid(thickest + longest);
+    for (std::size_t i = 0; i + 1 < n; ++i)
+      if (p.piece[i] == p.piece[i + 1]) grid.add(grid.cell_of(0.5 * (p.pos[i] + p.pos[i + 1])), static_cast<std::uint32_t>(i));
+    grid.index();
+    parallel_for(pieces.size(), thread_count(threads), [&](std::size_t piece) {
+      const std::size_t from = p.first[piece], to = p.first[piece + 1];
+      for (std::size_t i = from; i < to; ++i) {
+        double deepest = 0.0;
+        glm::dvec3 normal(0.0);
+        grid.near(grid.cell_of(p.pos[i]), [&](const spatial::Columns::Entry& e) {
+          const std::size_t j = e.item;
+          const double along_j = 0.5 * (p.along[j] + p.along[j + 1]);
+          if (p.piece[j] == p.piece[i] && std::abs(along_j - p.along[i]) <= 1.8 * (p.free_r[i] + p.free_r[j])) return;
+          const glm::dvec3 seg = p.pos[j + 1] - p.pos[j];
+          const double len2 = glm::dot(seg, seg);
+          const double t = len2 > 0.0 ? std::clamp(glm::dot(p.pos[i] - p.pos[j], seg) / len2, 0.0, 1.0) : 0.0;
+          const glm::dvec3 away = p.pos[i] - (p.pos[j] + t * seg);
+          const double dist = glm::length(away);
+          const double overlap = p.free_r[i] + p.free_r[j] - dist;
+          if (overlap <= 0.0 || dist <= 0.0) return;
+          // This yarn's share of the overlap, as its shell's share of the two shells.
+          const double shells = p.shell[i] + p.shell[j];
+          const double share = shells > 0.0 ? overlap * p.shell[i] / shells : 0.5 * overlap;
+          if (share > deepest) {
+            deepest = share;
+            normal = away / dist;
+          }
+        });
+        if (deepest <= 0.0) continue;
+        const glm::dvec3 t = tangent(p, i, from, to);
+        glm::dvec3 across = normal - glm::dot(normal, t) * t;
+        const double l = glm::length(across);
+        if (l < 1e-6) continue;
+        const double minor = std::max(p.free_r[i] - deepest, p.free_r[i] - p.shell[i]);
+        const double aspect = std::max(flattest_aspect, (minor / p.free_r[i]) * (minor / p.free_r[i]));
+        pressed[i] = (1.0 - aspect) * across / l;
+      }
+    });
+  }
+  // An ellipse is the same turned half a turn: each piece's directions turned to agree
+  // with the last pressed one before it, then smoothed along the piece.
+  for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
+    const std::size_t from = p.first[piece], to = p.first[piece + 1];
+    glm::dvec3 last(0.0);
+    for (std::size_t i = from; i < to; ++i) {
+      if (glm::dot(pressed[i], pressed[i]) == 0.0) continue;
+      if (glm::dot(pressed[i], last) < 0.0) pressed[i] = -pressed[i];
+      last = pressed[i];
+    }
+    std::vector<glm::dvec3> smooth(pressed.begin() + static_cast<std::ptrdiff_t>(from), pressed.begin() + static_cast<std::ptrdiff_t>(to));
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<glm::dvec3> next = smooth;
+      for (std::size_t k = 0; k < smooth.size(); ++k) {
+        const glm::dvec3& a = smooth[k > 0 ? k - 1 : k];
+        const glm::dvec3& b = smooth[k + 1 < smooth.size() ? k + 1 : k];
+        next[k] = 0.25 * a + 0.5 * smooth[k] + 0.25 * b;
+      }
+      smooth = std::move(next);
+    }
+    // The smoothed vectors, made across the yarn again.
+    auto& out = pieces[piece].pressed;
+    out.assign(smooth.size(), glm::dvec3(0.0));
+    for (std::size_t k = 0; k < smooth.size(); ++k) {
+      const glm::dvec3 t = tangent(p, from + k, from, to);
+      const double amount = glm::length(smooth[k]);
+      glm::dvec3 across = smooth[k] - glm::dot(smooth[k], t) * t;
+      const double l = glm::length(across);
+      if (amount > 1e-9 && l > 1e-9) out[k] = amount * across / l;
+    }
+  }
+}
+
+}  // namespace knitc::relax
