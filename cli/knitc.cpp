@@ -152,6 +152,11 @@ std::variant<Compiled, int> load_and_compile(const Args& args) {
   RelaxClock clock;
   auto compiled = compile(std::get<knitc::Pattern>(loaded), args, clock);
   if (const int* code = std::get_if<int>(&compiled)) return *code;
+  if (const auto& f = std::get<knitc::Fabric>(compiled); f.crossings_checked)
+    if (const std::size_t through = knitc::measure::passed_through(f.crossings); through > 0)
+      report(fmt::format("knitc: warning: relaxing passed a yarn through another at {} of {} crossings (see docs/relaxation.md, "
+                         "\"The library's gauges\"); --relax off draws the layout as it is",
+                         through, f.crossings.kept + f.crossings.flipped + f.crossings.lost));
   return Compiled{std::move(std::get<knitc::Pattern>(loaded)), std::move(std::get<knitc::Fabric>(compiled)), clock.seconds};
 }
 
@@ -287,8 +292,9 @@ void add_compile_options(CLI::App* cmd, Args& a) {
       ->check(CLI::Range(1e-4, 1.0));
   const std::map<std::string, bool> on_off{{"on", true}, {"off", false}};
   cmd->add_option("--relax", a.compile.relax,
-                  "on: move the yarns apart until no two overlap, keeping their lengths and crossings (docs/relaxation.md); "
-                  "off (default): the layout's curves as they are")
+                  "on (the default for the smooth loop model): move the yarns apart until no two cores overlap, keeping "
+                  "their lengths and crossings, and press their sections flat where they touch (docs/relaxation.md); off "
+                  "(the paper model's default): the layout's curves as they are")
       ->transform(CLI::CheckedTransformer(on_off, CLI::ignore_case));
   const std::map<std::string, knitc::relax::Boundary> boundaries{{"free", knitc::relax::Boundary::free},
                                                                  {"held", knitc::relax::Boundary::held},
@@ -421,7 +427,8 @@ int refuse_bad_outputs(const Commands& c) {
 }
 
 // The defaults that follow other options: a larger instruction budget brings a longer
-// deadline unless one is given; --quality sets the density, --sides and --tolerance win.
+// deadline unless one is given; the loop model says whether to relax unless --relax
+// does; --quality sets the density, --sides and --tolerance win.
 void settle_defaults(Commands& c) {
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
                            std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.chart_cmd, &c.chart},
@@ -430,6 +437,11 @@ void settle_defaults(Commands& c) {
     const knitc::runtime::Limits defaults;
     args->run.limits.seconds = defaults.seconds * std::max(1.0, static_cast<double>(args->run.limits.instructions) /
                                                                     static_cast<double>(defaults.instructions));
+  }
+  for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
+                           std::pair{c.snapshot_cmd, &c.snapshot}}) {
+    if (cmd->parsed() && cmd->get_option("--relax")->count() == 0)
+      args->compile.relax = knitc::relaxed_by_default(args->compile.loop_model);
   }
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
                            std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.bench_cmd, &c.bench}}) {

@@ -78,6 +78,12 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
       fmt::print(stderr, "by repeat   a tile of {} x {} loops relaxed in {} sweeps, tiled; {:.0f}% of the yarn held, the rest relaxed in {} sweeps\n",
                  r.repeat_wales, r.repeat_courses, r.repeat_iterations, 100.0 * r.held_share, r.iterations);
     print_sections(fabric);
+    if (fabric.crossings_checked) {
+      const auto& x = fabric.crossings;
+      fmt::print(stderr, "crossings   {} kept, {} flipped; {} lost and {} new, of which {} and {} alone where the yarns touched "
+                 "(a yarn passed through another); {} at one height\n",
+                 x.kept, x.flipped, x.lost, x.found, x.lost_alone_touching, x.found_alone_touching, x.ties);
+    }
   } else {
     fmt::print(stderr, "relaxation  off\n");
   }

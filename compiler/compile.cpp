@@ -101,7 +101,16 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     }
     relax::Options ro = options.relaxation;
     ro.threads = options.threads;
-    auto relaxed = relax::relax(fabric.layout, relax::refine(std::move(paths), core, ro.spacing), sizes, ro);
+    auto laid = relax::refine(std::move(paths), core, ro.spacing);
+    auto relaxed = relax::relax(fabric.layout, laid, sizes, ro);
+    // The relaxation checked by its result: did any yarn come out on the other side of
+    // another (docs/relaxation.md)?
+    if (fabric.layout.knitting == Knitting::flat) {
+      double thickest = 0.0;
+      for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
+      fabric.crossings = measure::relaxation_changes(laid, relaxed.pieces, thickest);
+      fabric.crossings_checked = true;
+    }
     paths = std::move(relaxed.pieces);
     fabric.relaxed = true;
     fabric.relaxation = relaxed.stats;

@@ -14,6 +14,7 @@
 #include "mesh/mesh.hpp"
 #include "nurbs/nurbs.hpp"
 #include "pattern.hpp"
+#include "measure/crossings.hpp"
 #include "relax/relax.hpp"
 #include "sweep/sweep.hpp"
 #include "tubes/tubes.hpp"
@@ -40,7 +41,8 @@ struct CompileOptions {
   int sides = 12;                 // vertices per tube ring, >= 3 (plies get about half, at least 5)
   double chord_tolerance = 0.01;  // as a fraction of the yarn diameter, > 0
   // Contact relaxation after the layout (see relax/relax.hpp); off: the layout's curves as
-  // they are. Off by default until it holds for every fabric (docs/relaxation.md).
+  // they are. Programs default it by relaxed_by_default; here it is off, for the tests
+  // and benchmarks that time or check the layout's geometry.
   bool relax = false;
   relax::Options relaxation;
   int threads = 0;                // 0: every core; the result is the same for any count
@@ -57,7 +59,15 @@ struct Fabric {
   mesh::Mesh mesh;                 // the tubes stage's
   bool relaxed = false;
   relax::Stats relaxation;         // when relaxed
+  // Relaxed flat work: how its knot diagram changed (measure::relaxation_changes); work
+  // in the round is not checked (its crossings are not seen from one face).
+  bool crossings_checked = false;
+  measure::CrossingChanges crossings;
 };
+
+// Whether knitc relaxes a fabric unless told: the smooth model's, so that no two yarn
+// cores overlap; the paper model stays the seed paper's unrelaxed geometry.
+inline bool relaxed_by_default(yarn_paths::LoopModel model) { return model == yarn_paths::LoopModel::smooth; }
 
 // Sizes past which compile() refuses a fabric rather than run out of memory (the
 // limits, declared with the pattern).

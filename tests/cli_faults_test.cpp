@@ -50,7 +50,7 @@ TEST(CliFaults, OutputsNamingOneFileAreRefusedAndNothingIsWritten) {
   test::write_text(dir / "x.glb", "old");
   for (const std::string& other : {(dir / "sub/../x.glb").string(), (dir / "./x.glb").string(), (dir / "link.glb").string()}) {
     if (other.find("link") != std::string::npos) fs::create_symlink(dir / "x.glb", dir / "link.glb");
-    const auto r = test::run_knitc("build " + jersey + " -q -o " + shell(dir / "x.glb") + " --centreline " + shell(other));
+    const auto r = test::run_knitc("build " + jersey + " --relax off -q -o " + shell(dir / "x.glb") + " --centreline " + shell(other));
     EXPECT_EQ(r.exit_code, 2) << other << ": " << r.err;
     EXPECT_NE(r.err.find("are the same file"), std::string::npos) << r.err;
     EXPECT_EQ(test::read_text(dir / "x.glb"), "old");
@@ -63,7 +63,7 @@ TEST(CliFaults, AFailingSecondOutputLeavesTheFirstAsItWas) {
   test::write_text(dir / "x.glb", "old");
   fs::create_directories(dir / "folder.json");
   for (const fs::path& bad : {dir / "folder.json", dir / "no/such/dir/x.json"}) {
-    const auto r = test::run_knitc("build " + jersey + " -q -o " + shell(dir / "x.glb") + " --centreline " + shell(bad));
+    const auto r = test::run_knitc("build " + jersey + " --relax off -q -o " + shell(dir / "x.glb") + " --centreline " + shell(bad));
     EXPECT_EQ(r.exit_code, 3) << r.err;
     EXPECT_EQ(r.err.rfind("knitc: cannot write " + bad.string() + ": ", 0), 0u) << r.err;
     EXPECT_EQ(test::read_text(dir / "x.glb"), "old");
@@ -146,7 +146,7 @@ TEST(CliFaults, BenchWritesInAFolderOfItsOwn) {
 }
 
 TEST(CliFaults, DevicesAndFifosAreWrittenInPlaceNotReplaced) {
-  const auto r = test::run_knitc("build " + jersey + " -q -o /dev/null");
+  const auto r = test::run_knitc("build " + jersey + " --relax off -q -o /dev/null");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   struct stat st {};
   ASSERT_EQ(::stat("/dev/null", &st), 0);
@@ -157,7 +157,7 @@ TEST(CliFaults, DevicesAndFifosAreWrittenInPlaceNotReplaced) {
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
   std::string got;
   std::thread reader([&] { got = test::read_text(fifo); });
-  const auto w = test::run_knitc("build " + jersey + " -q -o " + shell(fifo));
+  const auto w = test::run_knitc("build " + jersey + " --relax off -q -o " + shell(fifo));
   reader.join();
   EXPECT_EQ(w.exit_code, 0) << w.err;
   EXPECT_EQ(got.substr(0, 4), "glTF");
@@ -171,18 +171,18 @@ TEST(CliFaults, ATargetKeepsItsModeAndAReadOnlyOneIsRefused) {
   const fs::path dir = test::scratch_dir("modes");
   test::write_text(dir / "private.glb", "old");
   fs::permissions(dir / "private.glb", fs::perms::owner_read | fs::perms::owner_write);
-  ASSERT_EQ(test::run_knitc("build " + jersey + " -q -o " + shell(dir / "private.glb")).exit_code, 0);
+  ASSERT_EQ(test::run_knitc("build " + jersey + " --relax off -q -o " + shell(dir / "private.glb")).exit_code, 0);
   EXPECT_EQ(fs::status(dir / "private.glb").permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
   EXPECT_EQ(test::read_text(dir / "private.glb").substr(0, 4), "glTF");
 
   const mode_t mask = ::umask(0);
   ::umask(mask);
-  ASSERT_EQ(test::run_knitc("build " + jersey + " -q -o " + shell(dir / "new.glb")).exit_code, 0);
+  ASSERT_EQ(test::run_knitc("build " + jersey + " --relax off -q -o " + shell(dir / "new.glb")).exit_code, 0);
   EXPECT_EQ(static_cast<mode_t>(fs::status(dir / "new.glb").permissions() & fs::perms::all), 0666 & ~mask);
 
   test::write_text(dir / "locked.glb", "old");
   fs::permissions(dir / "locked.glb", fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
-  const auto r = test::run_knitc("build " + jersey + " -q -o " + shell(dir / "locked.glb"));
+  const auto r = test::run_knitc("build " + jersey + " --relax off -q -o " + shell(dir / "locked.glb"));
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_NE(r.err.find("it is read-only"), std::string::npos) << r.err;
   EXPECT_EQ(test::read_text(dir / "locked.glb"), "old");
@@ -191,8 +191,8 @@ TEST(CliFaults, ATargetKeepsItsModeAndAReadOnlyOneIsRefused) {
 }
 
 TEST(CliFaults, AFullDiskIsAnIoErrorForEveryOutput) {
-  for (const std::string& args : {"snapshot " + jersey, "chart " + jersey, "build " + jersey + " -q -o /dev/full",
-                                  "snapshot " + jersey + " -o /dev/full", "build " + jersey + " -q -o -",
+  for (const std::string& args : {"snapshot " + jersey, "chart " + jersey, "build " + jersey + " --relax off -q -o /dev/full",
+                                  "snapshot " + jersey + " -o /dev/full", "build " + jersey + " --relax off -q -o -",
                                   std::string("reference")}) {
     const auto r = run_to(args, "/dev/full");
     EXPECT_EQ(r.exit_code, 3) << args << ": " << r.err;
@@ -210,16 +210,16 @@ TEST(CliFaults, MisuseMessagesAreFitForATerminal) {
 
 TEST(CliFaults, DashIsStandardOutputAndLongNamesWork) {
   const fs::path dir = test::scratch_dir("dash");
-  const auto r = run_to("build " + jersey + " -q -o -", shell(dir / "piped.glb"));
+  const auto r = run_to("build " + jersey + " --relax off -q -o -", shell(dir / "piped.glb"));
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(test::read_text(dir / "piped.glb").substr(0, 4), "glTF");
   EXPECT_FALSE(fs::exists(fs::path(KNITC_SOURCE_DIR) / "-"));
-  const auto snap = test::run_knitc("snapshot " + jersey + " -o -");
+  const auto snap = test::run_knitc("snapshot " + jersey + " --relax off -o -");
   EXPECT_EQ(snap.exit_code, 0);
   EXPECT_EQ(snap.out.rfind("knitc snapshot", 0), 0u);
   // 250 characters: legal on every file system knitc meets; the temporary's name is short.
   const fs::path long_name = dir / (std::string(246, 'a') + ".glb");
-  const auto l = test::run_knitc("build " + jersey + " -q -o " + shell(long_name));
+  const auto l = test::run_knitc("build " + jersey + " --relax off -q -o " + shell(long_name));
   EXPECT_EQ(l.exit_code, 0) << l.err;
   EXPECT_TRUE(fs::exists(long_name));
   fs::remove_all(dir);
@@ -284,7 +284,7 @@ TEST(CliFaults, AnInterruptedWriteLeavesNoTemporary) {
     if (pid == 0) {
       const int null = ::open("/dev/null", O_WRONLY);
       ::dup2(null, 2);
-      ::execl(KNITC_BINARY, KNITC_BINARY, "build", (dir / "big.lua").c_str(), "-q", "-o",
+      ::execl(KNITC_BINARY, KNITC_BINARY, "build", (dir / "big.lua").c_str(), "-q", "--relax", "off", "-o",
               (dir / "out.glb").c_str(), static_cast<char*>(nullptr));
       ::_exit(127);
     }

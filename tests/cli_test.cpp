@@ -22,12 +22,12 @@ TEST(Cli, BuildsTheDefaultPatternInEveryViewAndLoopModel) {
   const std::pair<const char*, const char*> cases[] = {
       {"jersey-surface.glb", ""},
       {"jersey-surface-paper.glb", "--loop-model paper"},
-      {"jersey-wireframe.glb", "--view wireframe"},
-      {"jersey-centreline.glb", "--view centreline"},
+      {"jersey-wireframe.glb", "--view wireframe --relax off"},
+      {"jersey-centreline.glb", "--view centreline --relax off"},
       {"jersey-centreline-paper.glb", "--view centreline --loop-model paper"},
-      {"jersey-centripetal-coarse.glb", "--parameters centripetal --sides 5 --tolerance 0.1"},
+      {"jersey-centripetal-coarse.glb", "--parameters centripetal --sides 5 --tolerance 0.1 --relax off"},
       {"jersey-compressed.glb", "--compress"},
-      {"jersey-compressed-wireframe.glb", "--compress --view wireframe"},
+      {"jersey-compressed-wireframe.glb", "--compress --view wireframe --relax off"},
   };
   for (const auto& [name, options] : cases) {
     const auto r = test::run_knitc("build patterns/jersey.lua -q -o " + quoted(dir / name) + " " + options);
@@ -52,7 +52,7 @@ TEST(Cli, BuildsEllipticalAndPliedYarnsAtEveryQuality) {
   std::size_t previous = 0;
   for (const char* quality : {"draft", "normal", "fine"}) {
     const fs::path out = dir / (std::string("sections-") + quality + ".glb");
-    const auto r = test::run_knitc("build " + quoted(src / "sections.lua") + " -q --quality " + quality + " -o " + quoted(out));
+    const auto r = test::run_knitc("build " + quoted(src / "sections.lua") + " -q --relax off --quality " + quality + " -o " + quoted(out));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto size = fs::file_size(out);
     EXPECT_GT(size, previous) << quality;  // finer is bigger
@@ -60,8 +60,8 @@ TEST(Cli, BuildsEllipticalAndPliedYarnsAtEveryQuality) {
     EXPECT_NE(test::read_text(out).find("KHR_materials_sheen"), std::string::npos);
   }
   // --sides wins over --quality.
-  const auto a = test::run_knitc("build " + quoted(src / "sections.lua") + " -q --quality fine --sides 4 -o " + quoted(src / "a.glb"));
-  const auto b = test::run_knitc("build " + quoted(src / "sections.lua") + " -q --tolerance 0.0025 --sides 4 -o " + quoted(src / "b.glb"));
+  const auto a = test::run_knitc("build " + quoted(src / "sections.lua") + " -q --relax off --quality fine --sides 4 -o " + quoted(src / "a.glb"));
+  const auto b = test::run_knitc("build " + quoted(src / "sections.lua") + " -q --relax off --tolerance 0.0025 --sides 4 -o " + quoted(src / "b.glb"));
   ASSERT_EQ(a.exit_code, 0);
   ASSERT_EQ(b.exit_code, 0);
   EXPECT_EQ(test::read_text(src / "a.glb"), test::read_text(src / "b.glb"));
@@ -220,8 +220,8 @@ double figure(const std::string& text, const std::string& label) {
 }
 
 TEST(Cli, RelaxOnClearsTheOverlapAndSaysSo) {
-  const auto off = test::run_knitc("snapshot patterns/jersey.lua");
-  const auto on = test::run_knitc("snapshot patterns/jersey.lua --relax on");
+  const auto off = test::run_knitc("snapshot patterns/jersey.lua --relax off");
+  const auto on = test::run_knitc("snapshot patterns/jersey.lua");  // on: the smooth model's default
   ASSERT_EQ(off.exit_code, 0) << off.err;
   ASSERT_EQ(on.exit_code, 0) << on.err;
   EXPECT_NE(off.out.find("relaxation  off"), std::string::npos);
@@ -246,7 +246,7 @@ TEST(Cli, RelaxOnClearsTheOverlapAndSaysSo) {
 
 TEST(Cli, RendersAPreviewPng) {
   const fs::path dir = test::scratch_dir("render");
-  const auto r = test::run_knitc("render patterns/jersey.lua -q --size 64x48 --side both -o " + quoted(dir / "j.png"));
+  const auto r = test::run_knitc("render patterns/jersey.lua -q --relax off --size 64x48 --side both -o " + quoted(dir / "j.png"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string png = test::read_text(dir / "j.png");
   ASSERT_GT(png.size(), 24u);
@@ -302,8 +302,9 @@ TEST(Cli, SameScriptGivesByteIdenticalFilesOnAnyThreadCount) {
                    "pattern { gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = \"dk\" },\n"
                    "  B = { weight = \"dk\", section = \"plied\", plies = 3 } } }\n"
                    "cast_on(12)\nrows(3, \"k2, p2\")\nyarn \"B\"\nrows(3, \"k\")\n");
+  // The jersey unrelaxed; the small pattern at the default, relaxed and pressed.
   for (const char* pattern : {"patterns/jersey.lua", "P"}) {
-    const std::string source = std::string(pattern) == "P" ? quoted(dir / "p.lua") : pattern;
+    const std::string source = std::string(pattern) == "P" ? quoted(dir / "p.lua") : std::string(pattern) + " --relax off";
     std::vector<std::string> glb, json, snap;
     for (const char* threads : {"", "--threads 1", "--threads 2", "--threads 7"}) {
       const auto r = test::run_knitc("build " + source + " -q " + threads + " -o " + quoted(dir / "a.glb") + " --centreline " +

@@ -169,4 +169,9 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
   return changes;
 }
 
+CrossingChanges relaxation_changes(const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn_paths::Piece>& relaxed,
+                                   double thickest) {
+  return compare(crossings(laid), crossings(relaxed), 12, 24, thickest);
+}
+
 }  // namespace knitc::measure

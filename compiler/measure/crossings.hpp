@@ -51,4 +51,19 @@ struct CrossingChanges {
 CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window,
                         std::uint32_t pair_window = 0, double touching = 0.0);
 
+// The relaxation's changes to the knot diagram: `laid`, the refined layout's chains
+// (relax::refine), and `relaxed`, the same points moved. Matched within 12 segments
+// (about 8 core diameters: the chains' points are 0.7 apart), the unmatched paired off
+// within 24 (a float sliding under two neighbouring loops' legs makes two crossings some
+// 3 mm apart along their yarn); `thickest`, the thickest free diameter, mm: where the
+// yarns lay further apart in depth, a crossing lost or found alone slid away or in.
+CrossingChanges relaxation_changes(const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn_paths::Piece>& relaxed,
+                                   double thickest);
+
+// The crossings a yarn passing through another would explain: flipped, or lost or found
+// alone where the two yarns touched.
+inline std::size_t passed_through(const CrossingChanges& c) {
+  return c.flipped + c.lost_alone_touching + c.found_alone_touching;
+}
+
 }  // namespace knitc::measure

@@ -50,6 +50,9 @@ std::string snapshot(const Pattern& pattern, const Fabric& fabric, const measure
            fixed(100.0 * fabric.relaxation.length_change, 2) + "%\n";
   else
     out += "relaxation  off\n";
+  if (fabric.crossings_checked)
+    out += "crossings   " + std::to_string(fabric.crossings.kept) + " kept, " +
+           std::to_string(measure::passed_through(fabric.crossings)) + " passed through\n";
   std::size_t vertices = 0, elements = 0, triangles = 0;
   // The geometry's hash: every position to 1 micrometre, every index, primitive by primitive.
   Fnv1a hash;
