@@ -1,10 +1,15 @@
 // Deterministic parallel loops: the work is cut into contiguous blocks by index, each
 // result lands in its own slot, so the output never depends on the thread count.
+//
+// The blocks run on a pool of threads started once and kept (parallel.cpp): the
+// relaxation calls a parallel loop four times a sweep, hundreds of sweeps, and a thread
+// started for each call cost more than the work it shared on a small fabric.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <thread>
 #include <vector>
 
@@ -16,6 +21,14 @@ inline int thread_count(int requested) {
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
+namespace parallel {
+// Calls block(b) for every b in [0, blocks), each once, on the pool's threads and the
+// caller's; returns when all have returned. block must not throw. A call from inside a
+// block, or while another caller has the pool, runs its blocks on the calling thread, in
+// order.
+void run_blocks(std::size_t blocks, const std::function<void(std::size_t)>& block);
+}  // namespace parallel
+
 // Calls body(i) for i in [0, count), on up to `threads` threads. Rethrows the first
 // exception of the lowest block that threw.
 template <class Body>
@@ -26,19 +39,14 @@ void parallel_for(std::size_t count, int threads, Body&& body) {
     return;
   }
   std::vector<std::exception_ptr> errors(blocks);
-  std::vector<std::thread> workers;
-  workers.reserve(blocks - 1);
-  auto run = [&](std::size_t b) {
+  parallel::run_blocks(blocks, [&](std::size_t b) {
     try {
       const std::size_t first = count * b / blocks, last = count * (b + 1) / blocks;
       for (std::size_t i = first; i < last; ++i) body(i);
     } catch (...) {
       errors[b] = std::current_exception();
     }
-  };
-  for (std::size_t b = 1; b < blocks; ++b) workers.emplace_back(run, b);
-  run(0);
-  for (auto& w : workers) w.join();
+  });
   for (auto& e : errors) {
     if (e) std::rethrow_exception(e);
   }

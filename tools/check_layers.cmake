@@ -13,7 +13,7 @@ endif()
 get_filename_component(ROOT "${ROOT}" ABSOLUTE)
 
 # layer: where it lives (paths from the root; a folder holds everything below it)
-set(where_base      "compiler/parallel.hpp")
+set(where_base      "compiler/parallel.hpp;compiler/parallel.cpp")
 set(where_pattern   "compiler/pattern.hpp;compiler/pattern.cpp;compiler/checks.hpp;compiler/checks.cpp;compiler/stitches;compiler/yarn")
 set(where_mesh      "compiler/mesh")
 set(where_spatial   "compiler/spatial")
