@@ -129,8 +129,23 @@ double Contacts::gap(const Chains& c, const Pair& p) const {
 struct Contacts::Grid {
   spatial::Columns columns{1.0};
   glm::dvec2 lo{1e300}, hi{-1e300};  // the box of the contactable segments' midpoints
+  // The columns that hold a segment with a point free to move, sorted: a held segment
+  // with none of them around it has no pair to push (a tiled interior's, most of a big
+  // fabric's edge sweeps), so it is not looked at.
+  std::vector<std::uint64_t> free_columns;
   bool empty() const { return lo.x > hi.x; }
+  bool free_near(const glm::i64vec3& cell) const {
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        if (std::binary_search(free_columns.begin(), free_columns.end(), spatial::Columns::column_key(cell.x + dx, cell.y + dy)))
+          return true;
+    return false;
+  }
 };
+
+namespace {
+bool held_segment(const Chains& c, std::size_t i) { return c.inv_mass[i] == 0.0 && c.inv_mass[i + 1] == 0.0; }
+}  // namespace
 
 Contacts::Grid Contacts::grid_of(const Chains& c) const {
   Grid g;
@@ -156,12 +171,15 @@ Contacts::Grid Contacts::grid_of(const Chains& c) const {
       if (sx != 0 && period_.x == 0.0) continue;
       for (int sy = -1; sy <= 1; ++sy) {
         if (sy != 0 && period_.y == 0.0) continue;
-        g.columns.add(g.columns.cell_of(m + glm::dvec3(sx * period_.x, sy * period_.y, 0.0)), static_cast<std::uint32_t>(i),
-                      static_cast<std::int8_t>(sx), static_cast<std::int8_t>(sy));
+        const glm::i64vec3 at = g.columns.cell_of(m + glm::dvec3(sx * period_.x, sy * period_.y, 0.0));
+        g.columns.add(at, static_cast<std::uint32_t>(i), static_cast<std::int8_t>(sx), static_cast<std::int8_t>(sy));
+        if (!held_segment(c, i)) g.free_columns.push_back(spatial::Columns::column_key(at.x, at.y));
       }
     }
   }
   g.columns.index();
+  std::sort(g.free_columns.begin(), g.free_columns.end());
+  g.free_columns.erase(std::unique(g.free_columns.begin(), g.free_columns.end()), g.free_columns.end());
   return g;
 }
 
@@ -176,8 +194,10 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
     for (std::size_t a = from; a < to && a + 1 < n; ++a) {
       if (!c.contactable[a]) continue;
       const glm::dvec3 ma = midpoint(c, a);
+      const glm::i64vec3 cell = grid.columns.cell_of(ma);
+      if (held_segment(c, a) && !grid.free_near(cell)) continue;
       const double half_a = 0.5 * glm::distance(c.pos[a], c.pos[a + 1]);
-      grid.columns.near(grid.columns.cell_of(ma), [&](const spatial::Columns::Entry& b) {
+      grid.columns.near(cell, [&](const spatial::Columns::Entry& b) {
             const std::size_t bs = b.item;
             if (bs <= a) return;
             // One stretch of yarn, not a contact: of one piece, close along it (or along its
