@@ -110,15 +110,16 @@ struct Size {
 };
 
 // The boost adapts as in resilient propagation (Riedmiller and Braun): it grows while the
-// motion keeps its sign and quarters when it turns, so a fabric drawing in steadily is
-// carried fast and one that has found its size (the bending and the contacts balanced)
-// is not thrown back and forth.
+// motion keeps its sign and falls back to 1 when it turns (quartering it left a tube's
+// height overshooting for hundreds of sweeps once the lengths held firmly), so a fabric
+// drawing in steadily is carried fast and one that has found its size (the bending and
+// the contacts balanced) is not thrown back and forth.
 double adapt(double motion, double& boost, double most, double& last_sign) {
   const double sign = motion > 0.0 ? 1.0 : motion < 0.0 ? -1.0 : 0.0;
   if (sign * last_sign > 0.0)
     boost = std::min(most, boost * 1.5);
   else if (sign * last_sign < 0.0)
-    boost = std::max(1.0, boost * 0.25);
+    boost = 1.0;
   last_sign = sign;
   return boost * motion;
 }
@@ -280,7 +281,7 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
     keep_lengths(c, strain);
     bend(c, bending_stiffness, strain);
     limit_bends(c, tightest_bend_radii);
-    keep_lengths(c, strain);
+    for (int pass = 0; pass < length_passes; ++pass) keep_lengths(c, strain);
     boost_size(c, before, size, asked, contacts);
     if (start)
       for (const Image& image : start->images)

@@ -62,6 +62,11 @@ inline constexpr double shell_rate = 0.02;           // a shell's push a sweep, 
 inline constexpr double bending_stiffness = 0.3;     // of the way to straight, every three points a sweep
 inline constexpr double tightest_bend_radii = 1.2;   // no chain bends tighter than this many free radii
 inline constexpr double size_gain = 1024.0;          // the size boost per loop across (see relax.cpp)
+// The lengths are taken back this many times a sweep after bending: bending stretches the
+// yarn round the contacts by more than one pass returns, and with one pass the library's
+// whole-relaxed fabrics stopped at the sweep limit 2 to 3% long (three: 0.0 to 1.2%, in
+// fewer sweeps; docs/relaxation.md).
+inline constexpr int length_passes = 3;
 inline constexpr int ramp_sweeps = 10;               // the contact distance reaches the radii over this many sweeps
 inline constexpr double settled_pushes = 3.0;        // done once no push is deeper than this many tolerances
 inline constexpr double settled_length = 0.015;      // and no piece's length is further than this fraction off
