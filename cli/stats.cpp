@@ -81,8 +81,8 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
     if (fabric.crossings_checked) {
       const auto& x = fabric.crossings;
       fmt::print(stderr, "crossings   {} kept, {} flipped; {} lost and {} new, of which {} and {} alone where the yarns touched "
-                 "(a yarn passed through another); {} at one height\n",
-                 x.kept, x.flipped, x.lost, x.found, x.lost_alone_touching, x.found_alone_touching, x.ties);
+                 "(a yarn passed through another), {} and {} by a yarn's end (a tail drawn back or out); {} at one height\n",
+                 x.kept, x.flipped, x.lost, x.found, x.lost_alone_touching, x.found_alone_touching, x.lost_at_end, x.found_at_end, x.ties);
     }
   } else {
     fmt::print(stderr, "relaxation  off\n");

@@ -343,5 +343,41 @@ TEST(Crossings, APairSlidInBesideACrossingIsNoFlip) {
   EXPECT_EQ(measure::compare(before, measure::crossings({across, wave}), 12).flipped, 1u);
 }
 
+// A yarn's free end drawn back past another yarn unmakes their crossing alone, with no
+// yarn through another: told apart from a lone loss in the middle of a yarn, which the
+// measure counts as a possible pass-through.
+TEST(Crossings, AnEndDrawnBackIsNoPassThrough) {
+  yarn_paths::Piece across, tail;
+  for (int i = 0; i <= 40; ++i) across.data_points.push_back({i * 0.5 - 10.0, 0.0, 0.0});
+  for (int i = 0; i <= 30; ++i) tail.data_points.push_back({0.0, i * 0.5 - 14.0, 0.2});  // ends at y = 1
+  const auto before = measure::crossings({across, tail});
+  ASSERT_EQ(before.size(), 1u);
+  for (auto& p : tail.data_points) p.y -= 2.0;  // drawn back: its end now short of the other yarn
+  const auto after = measure::crossings({across, tail});
+  ASSERT_EQ(after.size(), 0u);
+  const std::vector<std::uint32_t> segments = {40, 30};
+  const auto blind = measure::compare(before, after, 12, 24, 1.0);
+  EXPECT_EQ(blind.lost_alone_touching, 1u);  // with no lengths given, it could be a pass-through
+  const auto seen = measure::compare(before, after, 12, 24, 1.0, segments);
+  EXPECT_EQ(seen.lost_alone, 0u);
+  EXPECT_EQ(seen.lost_alone_touching, 0u);
+  EXPECT_EQ(seen.lost_at_end, 1u);
+  EXPECT_EQ(measure::passed_through(seen), 0u);
+  // A loss far from both yarns' ends still counts alone: the middle of a long yarn
+  // pulled round the end of another, 50 segments away along it.
+  yarn_paths::Piece long_across, long_up;
+  for (int i = 0; i <= 100; ++i) long_across.data_points.push_back({i * 0.5 - 25.0, 0.0, 0.0});
+  for (int i = 0; i <= 300; ++i) long_up.data_points.push_back({0.0, i * 0.5 - 75.0, 0.2});
+  const auto long_before = measure::crossings({long_across, long_up});
+  ASSERT_EQ(long_before.size(), 1u);
+  for (auto& p : long_up.data_points)
+    if (p.y > -2.0 && p.y < 2.0) p.x = 30.0;
+  const auto long_after = measure::crossings({long_across, long_up});
+  ASSERT_EQ(long_after.size(), 0u);
+  const auto middle = measure::compare(long_before, long_after, 12, 24, 1.0, {100, 300});
+  EXPECT_EQ(middle.lost_at_end, 0u);
+  EXPECT_EQ(middle.lost_alone_touching, 1u);
+}
+
 }  // namespace
 }  // namespace knitc

@@ -78,7 +78,7 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
 }
 
 CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window,
-                        std::uint32_t pair_window, double touching) {
+                        std::uint32_t pair_window, double touching, const std::vector<std::uint32_t>& segments) {
   if (pair_window == 0) pair_window = window;
   CrossingChanges changes;
   auto gap = [](std::uint32_t x, std::uint32_t y) { return x > y ? x - y : y - x; };
@@ -132,7 +132,11 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
     }
   }
   // The unmatched, paired off two by two where the same yarn is in front at both.
-  auto alone = [&](const std::vector<Crossing>& list, const std::vector<char>& skip, std::vector<std::size_t>& at) {
+  // A segment within the pair window of its piece's first or last.
+  auto by_end = [&](std::uint32_t piece, std::uint32_t segment) {
+    return piece < segments.size() && (segment < pair_window || segment + pair_window >= segments[piece]);
+  };
+  auto alone = [&](const std::vector<Crossing>& list, const std::vector<char>& skip, std::vector<std::size_t>& at, std::size_t& at_end) {
     std::vector<char> paired(list.size(), 0);
     std::size_t count = 0;
     for (std::size_t i = 0; i < list.size(); ++i) {
@@ -144,7 +148,10 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
       // A yarn's own kink, two stretches of one piece a few segments apart along it, may
       // twist out or in alone (Reidemeister's first move).
       const bool kink = list[i].piece_a == list[i].piece_b && gap(list[i].segment_a, list[i].segment_b) <= pair_window;
-      if (partner == list.size() && !kink) {
+      const bool end = by_end(list[i].piece_a, list[i].segment_a) || by_end(list[i].piece_b, list[i].segment_b);
+      if (partner == list.size() && !kink && end) {
+        ++at_end;
+      } else if (partner == list.size() && !kink) {
         ++count;
         at.push_back(i);
       } else if (partner != list.size()) {
@@ -162,8 +169,8 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
     skip_after[j] = matched_after[j];
     changes.found += skip_after[j] ? 0 : 1;
   }
-  changes.lost_alone = alone(before, skip_before, changes.lost_alone_at);
-  changes.found_alone = alone(after, skip_after, changes.found_alone_at);
+  changes.lost_alone = alone(before, skip_before, changes.lost_alone_at, changes.lost_at_end);
+  changes.found_alone = alone(after, skip_after, changes.found_alone_at, changes.found_at_end);
   for (std::size_t i : changes.lost_alone_at) changes.lost_alone_touching += std::abs(before[i].depth) < touching ? 1 : 0;
   for (std::size_t j : changes.found_alone_at) changes.found_alone_touching += std::abs(after[j].depth) < touching ? 1 : 0;
   return changes;
@@ -171,7 +178,9 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
 
 CrossingChanges relaxation_changes(const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn_paths::Piece>& relaxed,
                                    double thickest) {
-  return compare(crossings(laid), crossings(relaxed), 12, 24, thickest);
+  std::vector<std::uint32_t> segments;
+  for (const auto& piece : laid) segments.push_back(piece.data_points.empty() ? 0 : static_cast<std::uint32_t>(piece.data_points.size() - 1));
+  return compare(crossings(laid), crossings(relaxed), 12, 24, thickest, segments);
 }
 
 }  // namespace knitc::measure

@@ -40,6 +40,10 @@ struct CrossingChanges {
   // compare was given it): only there can one have passed through the other. Where they
   // lay a diameter apart the crossing slid away or in, its partner out of reach.
   std::size_t lost_alone_touching = 0, found_alone_touching = 0;
+  // Lost or new alone within the pair window of a yarn's free end (given the pieces'
+  // lengths): an end sliding past another yarn unmakes or makes one crossing alone, with
+  // nobody passing through anybody. Not counted in lost_alone or found_alone.
+  std::size_t lost_at_end = 0, found_at_end = 0;
 };
 
 // Matches crossings before to crossings after between the same two pieces within
@@ -48,15 +52,18 @@ struct CrossingChanges {
 // pair off within `pair_window` segments (0: the same window): two crossings a move of
 // Reidemeister's second kind makes or undoes can lie further apart than one crossing
 // slides, as where a float slides under the legs of two neighbouring loops.
+// `segments`, if given, is each piece's number of segments: its ends are free, so a lone
+// change near one is an end's (lost_at_end, found_at_end).
 CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window,
-                        std::uint32_t pair_window = 0, double touching = 0.0);
+                        std::uint32_t pair_window = 0, double touching = 0.0, const std::vector<std::uint32_t>& segments = {});
 
 // The relaxation's changes to the knot diagram: `laid`, the refined layout's chains
 // (relax::refine), and `relaxed`, the same points moved. Matched within 12 segments
 // (about 8 core diameters: the chains' points are 0.7 apart), the unmatched paired off
 // within 24 (a float sliding under two neighbouring loops' legs makes two crossings some
 // 3 mm apart along their yarn); `thickest`, the thickest free diameter, mm: where the
-// yarns lay further apart in depth, a crossing lost or found alone slid away or in.
+// yarns lay further apart in depth, a crossing lost or found alone slid away or in. A
+// lone change within 24 segments of a yarn's end is the end's (a tail drawn back).
 CrossingChanges relaxation_changes(const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn_paths::Piece>& relaxed,
                                    double thickest);
 
