@@ -104,12 +104,25 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     auto laid = relax::refine(std::move(paths), core, ro.spacing);
     auto relaxed = relax::relax(fabric.layout, laid, sizes, ro);
     // The relaxation checked by its result: did any yarn come out on the other side of
-    // another (docs/relaxation.md)?
+    // another (docs/relaxation.md)? Tiling jumps the yarn to the tile's places with no
+    // sweep between to keep its crossings; where that passed a yarn through another, the
+    // fabric is relaxed whole as well, and the whole one kept if it passed fewer.
     if (fabric.layout.knitting == Knitting::flat) {
       double thickest = 0.0;
       for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
       fabric.crossings = measure::relaxation_changes(laid, relaxed.pieces, thickest);
       fabric.crossings_checked = true;
+      if (relaxed.stats.repeat_wales > 0 && measure::passed_through(fabric.crossings) > 0) {
+        relax::Options whole_options = ro;
+        whole_options.by_repeat = false;
+        auto whole = relax::relax(fabric.layout, laid, sizes, whole_options);
+        auto whole_crossings = measure::relaxation_changes(laid, whole.pieces, thickest);
+        if (measure::passed_through(whole_crossings) < measure::passed_through(fabric.crossings)) {
+          whole.stats.tiling_refused = true;
+          relaxed = std::move(whole);
+          fabric.crossings = whole_crossings;
+        }
+      }
     }
     paths = std::move(relaxed.pieces);
     fabric.relaxed = true;
