@@ -77,7 +77,7 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
     if (r.repeat_wales > 0)
       fmt::print(stderr, "by repeat   a tile of {} x {} loops relaxed in {} sweeps, tiled; {:.0f}% of the yarn held, the rest relaxed in {} sweeps\n",
                  r.repeat_wales, r.repeat_courses, r.repeat_iterations, 100.0 * r.held_share, r.iterations);
-    if (r.tiling_refused)
+    if (fabric.tiling_refused)
       fmt::print(stderr, "by repeat   refused: tiled, a yarn passed through another; relaxed whole instead\n");
     print_sections(fabric);
     if (fabric.crossings_checked) {

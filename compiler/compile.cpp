@@ -118,7 +118,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
         auto whole = relax::relax(fabric.layout, laid, sizes, whole_options);
         auto whole_crossings = measure::relaxation_changes(laid, whole.pieces, thickest);
         if (measure::passed_through(whole_crossings) < measure::passed_through(fabric.crossings)) {
-          whole.stats.tiling_refused = true;
+          fabric.tiling_refused = true;
           relaxed = std::move(whole);
           fabric.crossings = whole_crossings;
         }

@@ -63,6 +63,8 @@ struct Fabric {
   // in the round is not checked (its crossings are not seen from one face).
   bool crossings_checked = false;
   measure::CrossingChanges crossings;
+  // Relaxed whole because, relaxed by repeat, a yarn passed through another.
+  bool tiling_refused = false;
 };
 
 // Whether knitc relaxes a fabric unless told: the smooth model's, so that no two yarn

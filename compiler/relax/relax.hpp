@@ -84,9 +84,6 @@ struct Stats {
   // tiled.
   int repeat_wales = 0, repeat_courses = 0, repeat_iterations = 0;
   double held_share = 0.0;
-  // Relaxed whole because the fabric relaxed by repeat passed a yarn through another
-  // (set by the compile, which checks the crossings).
-  bool tiling_refused = false;
 };
 
 struct Relaxed {
