@@ -1,8 +1,10 @@
 // docs/language.md, generated from the tables that declare the verbs, stitches, chart
 // symbols and yarn weights, so the reference cannot drift from the code.
 #include <string>
+#include <vector>
 
 #include "fields.hpp"
+#include "language/spelling.hpp"
 #include "script.hpp"
 
 namespace knitc::runtime {
@@ -22,6 +24,47 @@ std::string escape_cell(std::string_view s) {
 std::string code(std::string_view s) {
   // Backticks that survive a | or \ inside a table cell.
   return "`` " + escape_cell(s) + " ``";
+}
+
+
+// How printed spellings are read (runtime/language/spelling.cpp), from its tables.
+std::string spellings_markdown() {
+  std::string md =
+      "\n## Spellings as printed\n\n"
+      "Written rows, the names in a chart's legend and knitspeak blocks are read through one normalisation, so a "
+      "pattern pasted from a vintage leaflet, a British blog or a typed page reads as its author meant:\n\n"
+      "- typography becomes plain text: curly quotes, en and em dashes, `\u00d7` for times, non-breaking spaces;\n"
+      "- dots go from inside and after abbreviations (`p.s.s.o.`, `rep.`, `sl. 1`), and a full stop between two "
+      "instructions is a comma (`K2. P2.`);\n"
+      "- spaces, dots and hyphens inside a name do not matter, nor does case: `K 2 tog`, `Y O`, `sl1-k1-psso`, "
+      "`Knit 2 together`;\n"
+      "- a count may be run into a name: `p5`, `sl1pw`, `sl1k`, `k2tbl`, `sl5wyif`;\n"
+      "- modifiers written as prose become their abbreviations (below).\n\n"
+      "A spelling that could mean more than one stitch is refused with its candidates named, never read as one of "
+      "them; a plain typo still gets a \"did you mean\".\n\n"
+      "| written as prose | read as |\n|---|---|\n";
+  // One line per abbreviation, its phrases in the table's order.
+  std::vector<std::string> order;
+  std::vector<std::string> phrases;
+  for (const auto& p : language::prose_phrases()) {
+    const std::string a(p.abbreviation);
+    std::size_t i = 0;
+    while (i < order.size() && order[i] != a) ++i;
+    if (i == order.size()) {
+      order.push_back(a);
+      phrases.emplace_back();
+    }
+    phrases[i] += (phrases[i].empty() ? "" : ", ") + std::string(p.phrase);
+  }
+  for (std::size_t i = 0; i < order.size(); ++i)
+    md += "| " + escape_cell(phrases[i]) + " | " + (order[i] == "," ? std::string("a comma: what closes the row follows") : code(order[i])) + " |\n";
+  md += "\nRefused as ambiguous:\n\n| written | could mean | why |\n|---|---|---|\n";
+  for (const auto& a : language::ambiguous_spellings()) {
+    std::string candidates(a.candidates);
+    for (std::size_t at = candidates.find('|'); at != std::string::npos; at = candidates.find('|')) candidates.replace(at, 1, ", ");
+    md += "| " + code(a.written) + " | " + escape_cell(candidates) + " | " + escape_cell(a.why) + " |\n";
+  }
+  return md;
 }
 
 }  // namespace
@@ -115,6 +158,7 @@ std::string language_reference() {
         "`Rnds 3, 5, and 7-9: ...`, `Rows 5-8: Repeat rows 1-4.`, `Repeat rows 3-6.`, a stated `(14 sts)` that is "
         "checked, bullets and full stops; headings and notes are skipped with a warning.\n\n"
         "A row that does not come out exactly is an error that says how many stitches are left over or missing.\n";
+  md += spellings_markdown();
   return md;
 }
 

@@ -7,6 +7,7 @@
 
 #include "fields.hpp"
 #include "language/knitspeak.hpp"
+#include "language/spelling.hpp"
 #include "script.hpp"
 
 namespace knitc::runtime {
@@ -185,8 +186,12 @@ void read_legend(lua_State* L, int index, language::Legend& legend, const std::s
     } else {
       fail(L, where + "[\"" + symbol + "\"] must be a stitch name, not a " + luaL_typename(L, -1));
     }
-    const auto id = language::find_stitch(name);
-    if (!id) fail(L, where + "[\"" + symbol + "\"] is '" + name + "', an unknown stitch; did you mean " + language::nearest_stitch_name(name) + "?");
+    const auto reading = language::read_stitch(language::normalise(name));
+    if (const auto* a = std::get_if<language::Ambiguous>(&reading)) fail(L, where + "[\"" + symbol + "\"]: " + language::ambiguous_message(*a));
+    const auto* r = std::get_if<language::Reading>(&reading);
+    if (!r || (r->count_written && r->count != 1))
+      fail(L, where + "[\"" + symbol + "\"] is '" + name + "', " + (r ? "a stitch with a count; a symbol stands for one stitch" : "an unknown stitch; did you mean " + language::nearest_stitch_name(name) + "?"));
+    const auto id = std::optional<StitchId>(r->stitch);
     if (!legend.set(symbol, {*id, yarn})) fail(L, where + " symbol \"" + symbol + "\" must be one or more characters without spaces");
     lua_pop(L, 1);
   }

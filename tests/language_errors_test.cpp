@@ -261,6 +261,22 @@ const BadScript catalogue[] = {
     {"undefined_verb",
      "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nrows_(2, \"k\")\n",
      "t.lua:3: attempt to call a nil value (global 'rows_'); did you mean rows?"},
+    // Spellings that could mean more than one stitch (issue 17): refused, candidates named.
+    {"ambiguous_decrease",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\nrow \"k1, dec, k1\"\n",
+     "t.lua:3: row 1 \"k1, dec, k1\": 'dec' could mean k2tog, ssk or p2tog (a decrease, but the pattern does not say which); write the one the pattern means"},
+    {"ambiguous_cable_in_legend",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\nchart { legend = { X = \"C4\" }, \"X---\" }\n",
+     "t.lua:3: chart{}.legend[\"X\"]: 'C4' could mean C4F or C4B (a cable, but not which way it crosses); write the one the pattern means"},
+    {"ambiguous_make_one_in_knitspeak",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\nknitspeak [[\nRow 1 (RS): k1, make one, k3.\n]]\n",
+     "t.lua:4: row 1 \"k1, make one, k3\": 'make one' could mean m1 or yo (a lifted increase in modern patterns, a yarn over in Victorian and early 20th-century ones); write the one the pattern means"},
+    {"ambiguous_purl_b",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\nrow \"k1, p1b, k2\"\n",
+     "t.lua:3: row 1 \"k1, p1b, k2\": 'p1b' could mean p tbl or p below (purl into the back of the stitch in British patterns, purl into the stitch below in Walker's and in brioche); write the one the pattern means"},
+    {"count_run_in_too_large",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\nrow \"k2, p2000000\"\n",
+     "t.lua:3: row 1 \"k2, p2000000\": the count in 'p2000000' must be from 1 to 100000"},
 };
 
 std::string expected(const BadScript& script) {

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <map>
 
+#include "language/spelling.hpp"
 #include "language/written.hpp"
 
 namespace knitc::language {
@@ -107,60 +108,146 @@ std::optional<std::vector<int>> numbers(std::string_view text, std::string& prob
   return out;
 }
 
-// "rows 1-4", "rnds 3 and 4", "from 1 to 2" after "repeat": the rows, if that is what it says.
-std::optional<std::vector<int>> repeated_rows(std::string_view body, std::string& problem) {
-  std::string t = lower(trim(body));
-  while (!t.empty() && (t.back() == '.' || std::isspace(static_cast<unsigned char>(t.back())))) t.pop_back();
-  for (std::string_view verb : {"repeat ", "rep ", "work "}) {
-    if (t.rfind(verb, 0) != 0) continue;
-    std::string rest = t.substr(verb.size());
-    for (std::string_view noun : {"rows ", "row ", "rounds ", "round ", "rnds ", "rnd "}) {
-      if (rest.rfind(noun, 0) == 0) {
-        rest = rest.substr(noun.size());
-        // "repeat rows 1-4 once more", "... twice" are not read: once, where it stands.
-        return numbers(rest, problem);
-      }
-    }
-  }
-  return std::nullopt;
-}
-
 struct Label {
   std::vector<int> rows;
   std::optional<Side> side;
   std::string body;
 };
 
-// "Row 1 (RS): ...", "Rnds 2 and 4: ...", "Rows 1, 3 (WS). ..."
-std::optional<Label> label(std::string_view line, std::string& problem) {
-  const std::string l = lower(line);
-  std::size_t at = 0;
-  bool found = false;
-  for (std::string_view noun : {"rounds", "round", "rnds", "rnd", "rows", "row"}) {
-    if (l.rfind(noun, 0) == 0 && l.size() > noun.size() && !std::isalpha(static_cast<unsigned char>(l[noun.size()]))) {
-      at = noun.size();
-      found = true;
-      break;
-    }
-  }
-  if (!found) return std::nullopt;
-  const std::size_t colon = l.find(':', at);
-  if (colon == std::string::npos) return std::nullopt;
-  std::string head = l.substr(at, colon - at);
+// The side marks a label may carry, as printed.
+constexpr std::pair<std::string_view, Side> side_marks[] = {
+    {"(rs)", Side::right}, {"(ws)", Side::wrong}, {"[rs]", Side::right}, {"[ws]", Side::wrong},
+    {"(right side)", Side::right}, {"(wrong side)", Side::wrong}, {"(right side row)", Side::right},
+    {"(wrong side row)", Side::wrong}, {"(right side rows)", Side::right}, {"(wrong side rows)", Side::wrong},
+    {"(rs rows)", Side::right}, {"(ws rows)", Side::wrong}, {"(rs row)", Side::right}, {"(ws row)", Side::wrong},
+};
+
+// A label's head (lower case, its noun taken off) as row numbers and a side, or nothing.
+std::optional<Label> head_rows(std::string head, std::string& problem) {
   Label out;
-  for (auto [mark, side] : {std::pair{"(rs)", Side::right}, {"(ws)", Side::wrong}, {"(right side)", Side::right},
-                            {"(wrong side)", Side::wrong}}) {
+  for (const auto& [mark, side] : side_marks) {
     const auto m = head.find(mark);
     if (m != std::string::npos) {
       out.side = side;
-      head.erase(m, std::string_view(mark).size());
+      head.erase(m, mark.size());
     }
   }
   const auto rows = numbers(head, problem);
   if (!rows) return std::nullopt;
   out.rows = *rows;
-  out.body = std::string(trim(line.substr(colon + 1)));
   return out;
+}
+
+// "1st", "2nd", "23rd", "4th" as 1, 2, 23, 4: vintage leaflets number rows so.
+std::string without_ordinals(std::string_view l) {
+  std::string out;
+  for (std::size_t i = 0; i < l.size(); ++i) {
+    out += l[i];
+    if (!std::isdigit(static_cast<unsigned char>(l[i])) || i + 2 >= l.size()) continue;
+    const std::string_view suffix = l.substr(i + 1, 2);
+    const bool word_ends = i + 3 >= l.size() || !std::isalnum(static_cast<unsigned char>(l[i + 3]));
+    if (word_ends && (suffix == "st" || suffix == "nd" || suffix == "rd" || suffix == "th")) i += 2;
+  }
+  return out;
+}
+
+// Where a label's head ends and the row begins: a colon, else a full stop or a dash
+// after the numbers ("1st row.-K 2", "Row 1. K2", "Row 3 - k2"), else nothing.
+std::vector<std::size_t> separators(std::string_view l, std::size_t from) {
+  std::vector<std::size_t> out;
+  if (const auto colon = l.find(':', from); colon != std::string_view::npos) out.push_back(colon);
+  for (std::size_t i = from; i < l.size(); ++i) {
+    const bool stop = l[i] == '.' && (i + 1 == l.size() || !std::isdigit(static_cast<unsigned char>(l[i + 1])));
+    const bool dash = l[i] == '-' && i > 0 && l[i - 1] == ' ' && i + 1 < l.size() && l[i + 1] == ' ';
+    if (stop || dash) out.push_back(i);
+  }
+  return out;
+}
+
+// After the separator: the rest of a ".-", ":-" or " - " and the spaces.
+std::size_t body_start(std::string_view l, std::size_t sep) {
+  std::size_t i = sep + 1;
+  while (i < l.size() && (l[i] == '-' || l[i] == '.' || l[i] == ':' || std::isspace(static_cast<unsigned char>(l[i])))) ++i;
+  return i;
+}
+
+bool noun_at(std::string_view l, std::size_t at, std::size_t& after) {
+  for (std::string_view noun : {"rounds", "round", "rnds", "rnd", "rows", "row"}) {
+    if (l.compare(at, noun.size(), noun) == 0 &&
+        (at + noun.size() == l.size() || !std::isalpha(static_cast<unsigned char>(l[at + noun.size()])))) {
+      after = at + noun.size();
+      return true;
+    }
+  }
+  return false;
+}
+
+// "rows 1-4", "rnds 3 and 4", "from 1 to 2" after "repeat", and the vintage "as 1st and
+// 2nd rows", "work as row 1": the rows, if that is what it says.
+std::optional<std::vector<int>> repeated_rows(std::string_view body, std::string& problem) {
+  std::string t = lower(trim(body));
+  while (!t.empty() && (t.back() == '.' || std::isspace(static_cast<unsigned char>(t.back())))) t.pop_back();
+  constexpr std::string_view nouns[] = {"rows ", "row ", "rounds ", "round ", "rnds ", "rnd "};
+  for (std::string_view verb : {"repeat ", "rep ", "work as ", "work ", "same as ", "as "}) {
+    if (t.rfind(verb, 0) != 0) continue;
+    std::string rest = t.substr(verb.size());
+    for (std::string_view noun : nouns) {
+      if (rest.rfind(noun, 0) == 0) {
+        rest = rest.substr(noun.size());
+        // "repeat rows 1-4 once more", "... twice" are not read: once, where it stands.
+        return numbers(rest, problem);
+      }
+    }
+    // "as 1st and 2nd rows"
+    if (rest.empty() || !std::isdigit(static_cast<unsigned char>(rest[0]))) return std::nullopt;
+    for (std::string_view noun : nouns) {
+      const std::string_view word = noun.substr(0, noun.size() - 1);
+      if (rest.size() > word.size() && rest.compare(rest.size() - word.size(), word.size(), word) == 0 &&
+          rest[rest.size() - word.size() - 1] == ' ')
+        return numbers(without_ordinals(rest.substr(0, rest.size() - word.size())), problem);
+    }
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+// "Row 1 (RS): ...", "Rnds 2 and 4: ...", "Rows 1, 3 (WS). ...", and the vintage
+// "1st row.-K 2, p 2." and "2nd and 4th rows (wrong side): ..." (the line's typography
+// already plain, so an em dash is "-").
+std::optional<Label> label(std::string_view line, std::string& problem) {
+  const std::string l = lower(line);
+  std::size_t after = 0;
+  if (noun_at(l, 0, after)) {
+    for (std::size_t sep : separators(l, after)) {
+      std::string attempt;
+      auto out = head_rows(l.substr(after, sep - after), attempt);
+      if (!out) {
+        if (!attempt.empty() && sep == l.find(':', after)) problem = attempt;
+        if (!problem.empty()) return std::nullopt;
+        continue;
+      }
+      out->body = std::string(trim(line.substr(body_start(l, sep))));
+      return out;
+    }
+    return std::nullopt;
+  }
+  // The ordinal form: numbers first, then the noun.
+  if (l.empty() || !std::isdigit(static_cast<unsigned char>(l[0]))) return std::nullopt;
+  for (std::size_t at = 1; at < l.size(); ++at) {
+    if (!std::isalpha(static_cast<unsigned char>(l[at])) || std::isalpha(static_cast<unsigned char>(l[at - 1]))) continue;
+    if (!noun_at(l, at, after)) continue;
+    const std::string head = without_ordinals(l.substr(0, at));
+    // What stands between the noun and the separator is a side mark or nothing.
+    for (std::size_t sep : separators(l, after)) {
+      std::string attempt;
+      auto out = head_rows(head + " " + l.substr(after, sep - after), attempt);
+      if (!out) continue;
+      out->body = std::string(trim(line.substr(body_start(l, sep))));
+      return out;
+    }
+    return std::nullopt;
+  }
+  return std::nullopt;
 }
 
 // A trailing "(14 sts)": the stitch count the row leaves; "(multiple of 12 sts, plus 11)"
@@ -336,7 +423,8 @@ std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, st
     const std::size_t end = std::min(block.find('\n', start), block.size());
     const std::string_view raw = block.substr(start, end - start);
     start = end + 1;
-    const std::string_view line = without_bullet(trim(raw));
+    const std::string plain = typography_as_ascii(without_bullet(trim(raw)));
+    const std::string_view line = trim(plain);
     if (line.empty() || is_fence(line)) continue;
     std::string problem;  // a row list that cannot be honoured
     bool ok = true;

@@ -4,6 +4,8 @@
 // across the live stitches is worked.cpp.
 #include "language/written.hpp"
 
+#include "language/spelling.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -72,7 +74,7 @@ std::string stitch_hint(const std::string& written) {
 class Parser {
  public:
   Parser(std::string_view text, std::span<const std::string> yarns, bool hints = true)
-      : text_(text), tokens_(tokenize(text)), yarns_(yarns), hints_(hints) {}
+      : text_(text), normal_(normalise(text)), tokens_(tokenize(normal_)), yarns_(yarns), hints_(hints) {}
 
   std::variant<RowText, TextError> row() {
     // Brackets first: an unclosed group would otherwise read as a strange stitch.
@@ -87,7 +89,7 @@ class Parser {
     }
     if (!open.empty()) return fail(std::string("'") + open.back() + "' is never closed");
     RowText r;
-    if (as_they_appear(text_)) {
+    if (as_they_appear(text_) || as_they_appear(normal_)) {
       r.as_they_appear = true;
       return r;
     }
@@ -283,6 +285,7 @@ class Parser {
     if (words.size() == 1 && words[0].size() > 1 && words[0][0] == 'x') n = whole(std::string_view(words[0]).substr(1));
     else if (words.size() == 1 && words[0].size() > 1 && words[0].back() == 'x') n = whole(std::string_view(words[0]).substr(0, words[0].size() - 1));
     else if (words.size() == 2 && words[0] == "x") n = whole(words[1]);
+    else if (words.size() == 2 && words[1] == "x") n = whole(words[0]);
     else if (words.size() == 2 && (words[1] == "times" || words[1] == "time")) n = whole(words[0]);
     else if (words.size() == 1 && words[0] == "twice") n = 2;
     else if (words.size() == 1 && words[0] == "once") n = 1;
@@ -313,42 +316,23 @@ class Parser {
     }
     // "sl1, k2tog, psso": passing the slipped stitch over makes the two one stitch.
     if (words.size() == 1 && (lower(words[0]) == "psso" || lower(words[0]) == "pass slipped stitch over")) return pass_over(seq);
-    // "k1tbl": a count run into the next word, split there (views into the same text).
-    std::vector<std::string_view> split;
-    if (!find_stitch(join(words))) {
-      const std::string_view w = words[0];
-      std::size_t i = 0;
-      while (i < w.size() && std::isalpha(static_cast<unsigned char>(w[i]))) ++i;
-      std::size_t j = i;
-      while (j < w.size() && std::isdigit(static_cast<unsigned char>(w[j]))) ++j;
-      if (i > 0 && j > i && j < w.size() && std::isalpha(static_cast<unsigned char>(w[j]))) {
-        split = {w.substr(0, j), w.substr(j)};
-        split.insert(split.end(), words.begin() + 1, words.end());
-        words = split;
-      }
+    // The stitch as printed: exact, squeezed ("K 2 tog"), or with a count run in ("sl1pw").
+    const auto reading = read_stitch(words);
+    if (const auto* a = std::get_if<Ambiguous>(&reading)) {
+      fail(ambiguous_message(*a));
+      return false;
     }
-    // The whole text as a name first ("k2tog", "sl1-k2tog-psso", "no stitch").
-    std::optional<StitchId> id = find_stitch(join(words));
+    std::optional<StitchId> id;
     int count = 1;
     bool explicit_count = false;
-    if (!id) {
-      std::string_view first = words[0];
-      std::size_t digits = first.size();
-      while (digits > 0 && std::isdigit(static_cast<unsigned char>(first[digits - 1]))) --digits;
-      if (digits < first.size() && digits > 0) {
-        std::vector<std::string_view> rest(words.begin(), words.end());
-        rest[0] = first.substr(0, digits);
-        id = find_stitch(join(rest));
-        if (id) {
-          const auto n = whole(first.substr(digits));
-          if (!n || *n < 1 || *n > max_count) {
-            fail("the count in '" + written + "' must be from 1 to 100000");
-            return false;
-          }
-          count = *n;
-          explicit_count = true;
-        }
+    if (const auto* r = std::get_if<Reading>(&reading)) {
+      if (r->count_too_large) {
+        fail("the count in '" + written + "' must be from 1 to 100000");
+        return false;
       }
+      id = r->stitch;
+      count = r->count;
+      explicit_count = r->count_written;
     }
     if (!id) {
       // "k2 C" with C not declared: say so rather than call it an unknown stitch.
@@ -392,6 +376,7 @@ class Parser {
   }
 
   std::string_view text_;
+  std::string normal_;  // the text as normalise() spells it: what the tokens view
   std::vector<Token> tokens_;
   std::span<const std::string> yarns_;
   bool hints_ = true;

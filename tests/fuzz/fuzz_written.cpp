@@ -1,5 +1,5 @@
-// libFuzzer target for written row instructions: parse_row, then work_row and
-// face_view on both sides, checking what must hold whatever the text.
+// libFuzzer target for written row instructions: the spelling normalisation, parse_row,
+// then work_row and face_view on both sides, checking what must hold whatever the text.
 //
 // Input: two bytes (big-endian) that give the live stitch count, 1 + value % 2000,
 // then the row's text.
@@ -13,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "language/spelling.hpp"
 #include "language/written.hpp"
 
 namespace {
@@ -50,9 +51,25 @@ void check_sequence(const Sequence& seq, int yarns, int depth) {
   }
 }
 
+// The normalisation the parser reads through: once is enough, and a spelling it reads is
+// a stitch of the table or a refusal that names its candidates.
+void check_spelling(std::string_view text) {
+  const std::string once = normalise(text);
+  check(normalise(once) == once, "normalise is not idempotent");
+  const auto read = read_stitch(once);
+  if (const auto* r = std::get_if<Reading>(&read)) {
+    check(valid_id(r->stitch), "read_stitch gave an invalid stitch id");
+    check(r->count >= 1 && r->count <= 100'000, "read_stitch gave a count out of range");
+  } else if (const auto* a = std::get_if<Ambiguous>(&read)) {
+    check(a->candidates.size() >= 2, "an ambiguous spelling names fewer than two candidates");
+    check(!ambiguous_message(*a).empty(), "an ambiguous spelling has no message");
+  }
+}
+
 void run(std::string_view text, int live) {
   static const std::vector<std::string> yarn_ids{"A", "B", "MC"};
   const int yarns = static_cast<int>(yarn_ids.size());
+  if (text.size() <= 4096) check_spelling(text);
 
   const auto parsed = parse_row(text, yarn_ids);
   if (const auto* e = std::get_if<TextError>(&parsed)) {
