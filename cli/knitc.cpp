@@ -25,6 +25,7 @@
 #include <fmt/core.h>
 
 #include "bench.hpp"
+#include "printed.hpp"
 #include "stats.hpp"
 #include "compile.hpp"
 #include "measure/measure.hpp"
@@ -49,6 +50,7 @@ struct Args {
   std::string output;
   std::string centreline;
   knitc::runtime::RunOptions run;
+  knitc::cli::PrintedArgs printed;  // a printed pattern's declaration
   knitc::CompileOptions compile;
   knitc::render::RenderOptions render;
   std::string size = "960x720";
@@ -61,7 +63,9 @@ struct Args {
 // The pattern, or the exit code when it could not be had. Warnings go to stderr.
 std::variant<knitc::Pattern, int> load(const Args& args) {
   try {
-    auto result = knitc::runtime::run_pattern_file(args.pattern, args.run);
+    auto result = knitc::runtime::is_printed_pattern(args.pattern)
+                      ? knitc::runtime::run_printed_file(args.pattern, args.printed.options, args.run)
+                      : knitc::runtime::run_pattern_file(args.pattern, args.run);
     for (const auto& w : result.warnings) report(w);
     return std::move(result.pattern);
   } catch (const knitc::runtime::PatternError& e) {
@@ -247,7 +251,7 @@ std::optional<std::pair<int, int>> dimensions(const std::string& text, int lo, i
 
 // What every command that runs a pattern takes.
 void add_pattern_options(CLI::App* cmd, Args& a) {
-  cmd->add_option("pattern", a.pattern, "the pattern script (.lua)")->required();
+  cmd->add_option("pattern", a.pattern, "the pattern script (.lua), or a printed pattern (any other file)")->required();
   cmd->add_option("-I,--include", a.run.module_dirs, "a folder `require` searches first (repeatable)");
   cmd->add_option("--seed", a.run.seed, "math.random's seed, over the pattern's own");
   cmd->add_option_function<std::uint64_t>(
@@ -263,6 +267,7 @@ void add_pattern_options(CLI::App* cmd, Args& a) {
       ->check(finite)
       ->check(CLI::Range(0.01, 3600.0));
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing on success");
+  knitc::cli::add_printed_options(cmd, a.printed);
 }
 
 void add_compile_options(CLI::App* cmd, Args& a) {
@@ -353,7 +358,7 @@ void declare_commands(Commands& c) {
   app.set_version_flag("--version", "knitc " KNITC_VERSION);
   app.require_subcommand(1);
 
-  c.build_cmd = app.add_subcommand("build", "compile a pattern script into a glTF binary (.glb)");
+  c.build_cmd = app.add_subcommand("build", "compile a pattern script or a printed pattern into a glTF binary (.glb)");
   add_pattern_options(c.build_cmd, c.build);
   c.build_cmd->add_option("-o,--output", c.build.output, "the .glb to write (- for standard output)")->required();
   c.build_cmd->add_option("--centreline", c.build.centreline, "also write the centrelines and loop data points as JSON (mm)");
@@ -510,6 +515,15 @@ int run(int argc, char** argv) {
     return exit_usage;
   }
   if (const int code = refuse_bad_outputs(c); code != 0) return code;
+  for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
+                           std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.chart_cmd, &c.chart},
+                           std::pair{c.check_cmd, &c.check}}) {
+    if (!cmd->parsed()) continue;
+    if (const auto problem = knitc::cli::settle_printed_options(cmd, args->pattern, args->printed)) {
+      report(*problem);
+      return exit_usage;
+    }
+  }
   settle_defaults(c);
   return dispatch(c);
 }

@@ -241,6 +241,9 @@ int pattern_verb(lua_State* L) {
   const std::string knitting = string_field(L, 1, "pattern{}", "knitting").value_or(std::string(field("pattern", "knitting").fallback));
   if (knitting == "flat") p.knitting = Knitting::flat;
   else if (knitting != "round") fail(L, "knitting is \"" + printable(knitting, 100) + "\"; use \"round\" or \"flat\"");
+  const std::string selvedge = string_field(L, 1, "pattern{}", "selvedge").value_or(std::string(field("pattern", "selvedge").fallback));
+  if (selvedge != "garter" && selvedge != "chain" && selvedge != "knit")
+    fail(L, "selvedge is \"" + printable(selvedge, 100) + "\"; use \"garter\", \"chain\" or \"knit\"");
   lua_getfield(L, 1, "seed");
   if (!lua_isnil(L, -1)) {
     const Field& f = field("pattern", "seed");
@@ -257,6 +260,9 @@ int pattern_verb(lua_State* L) {
   lua_pop(L, 1);
   for (const Yarn& y : p.yarns) s.yarn_ids.push_back(y.id);
   s.work = language::Work(std::move(p), {max_stitches, max_loops});
+  s.work.set_selvedge(selvedge == "chain" ? language::Selvedge::chain
+                      : selvedge == "knit" ? language::Selvedge::knit
+                                           : language::Selvedge::garter);
   s.declared = true;
   s.declared_line = caller_line(L);
   return 0;

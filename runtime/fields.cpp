@@ -39,6 +39,10 @@ constexpr Field fields[] = {
     table("pattern", "yarns", "the yarns, each by a short name: { A = { ... }, B = { ... } }"),
     choice("pattern", "knitting", "round|flat", "round",
            "round: every row is worked from the right side; flat: even rows are wrong-side rows"),
+    choice("pattern", "selvedge", "garter|chain|knit", "garter",
+           "how an edge stitch (edge st, selvedge st, sel st) is worked: garter, knitted at both ends of every row; "
+           "chain, the first slipped knitwise and the last knitted; knit, knitted on right-side rows and purled on "
+           "wrong-side ones"),
     whole("pattern", "seed", -9007199254740992.0, 9007199254740992.0, "math.random's seed (--seed overrides)", 0),
 
     number("gauge", "stitches", 0, 200, " per 10 cm", "stitches per 10 cm, with rows"),

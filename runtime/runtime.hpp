@@ -64,6 +64,28 @@ RunResult run_pattern(std::string_view source, const std::string& file, const Ru
 // including a file over the size a pattern may have (max_source_bytes).
 RunResult run_pattern_file(const std::string& path, const RunOptions& options = {});
 
+// A printed pattern read as a file of its own: the declaration a script would make, from
+// the command line or these defaults (docs/printed.md).
+struct PrintedOptions {
+  std::optional<int> cast_on;        // else the text's "cast on N", its stated multiple, or row 1's
+  double stitches_per_10cm = 22.0;   // the gauge
+  double rows_per_10cm = 30.0;
+  std::string weight = "dk";         // the yarn's weight (the weights of docs/language.md)
+  std::string color = "#d9c8a9";
+  std::optional<Knitting> knitting;  // else round when its rows are rounds ("Rnd 1:"), else flat
+};
+
+// Whether knitc reads `path` as a printed pattern rather than a script: any file but .lua.
+bool is_printed_pattern(const std::string& path);
+
+// Reads the printed pattern at `path` and works it as a knitspeak block (the knitspeak
+// verb's reading) on a cast-on of `printed.cast_on`, else the count the text states
+// ("Cast on 26 sts"), else its stated multiple ("multiple of 6 sts plus 3": the fewest
+// repeats, at least two, that make 24 stitches or more), else the widths its row 1 fits
+// (the first, from two repeats and 24 stitches up, on which every row comes out).
+// Messages are "path:line: ..." at the text's own lines. Throws as run_pattern_file does.
+RunResult run_printed_file(const std::string& path, const PrintedOptions& printed, const RunOptions& options = {});
+
 // The largest pattern or module file knitc reads.
 inline constexpr std::size_t max_source_bytes = 4u << 20;
 

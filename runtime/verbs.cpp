@@ -307,6 +307,13 @@ int knitspeak_verb(lua_State* L) {
       fail_at(L, where, label + " is printed as a " + (*r.side == Side::right ? "right" : "wrong") + "-side row but is row " +
                             std::to_string(next_row(s)) + " of the fabric, a " +
                             (*r.side == Side::right ? "wrong" : "right") + "-side row; check the rows before it");
+    // An abbreviation the text defines in words knitc cannot read: say so, with its line.
+    if (const auto* unread = language::unread_abbreviation_in(r.text, block.glossary);
+        unread && language::parse_row(r.text, s.yarn_ids, false).index() != 0)
+      fail_at(L, where, label + " uses '" + unread->abbreviation + "', which line " + std::to_string(at(unread->line).line) +
+                            " defines as " + language::quote_row(unread->definition) +
+                            "; knitc cannot read that working yet: write the row with stitches it knows (knitc reference "
+                            "lists them)");
     work_written(L, parse_written(L, r.text, &where), r.text, where, true);
     if (r.stitches_after && *r.stitches_after != s.work.live())
       fail_at(L, where, label + " says it leaves " + std::to_string(*r.stitches_after) + " sts but its stitches leave " +

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <map>
+#include <regex>
 
 #include "language/spelling.hpp"
 #include "language/written.hpp"
@@ -15,6 +16,7 @@ namespace {
 constexpr int max_row_number = 100'000;
 constexpr std::size_t max_block_rows = 100'000;             // rows a block expands to
 constexpr std::size_t max_block_text_bytes = 16u << 20;     // bytes of those rows' texts
+constexpr std::size_t max_glossary = 200;                   // abbreviations a text may define
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -112,6 +114,7 @@ struct Label {
   std::vector<int> rows;
   std::optional<Side> side;
   std::string body;
+  bool every_other = false;  // "Row 2 and all other WS rows": the text of every such row not given
 };
 
 // The side marks a label may carry, as printed.
@@ -120,11 +123,28 @@ constexpr std::pair<std::string_view, Side> side_marks[] = {
     {"(right side)", Side::right}, {"(wrong side)", Side::wrong}, {"(right side row)", Side::right},
     {"(wrong side row)", Side::wrong}, {"(right side rows)", Side::right}, {"(wrong side rows)", Side::wrong},
     {"(rs rows)", Side::right}, {"(ws rows)", Side::wrong}, {"(rs row)", Side::right}, {"(ws row)", Side::wrong},
+    {"(right side rows)", Side::right},
 };
 
 // A label's head (lower case, its noun taken off) as row numbers and a side, or nothing.
 std::optional<Label> head_rows(std::string head, std::string& problem) {
   Label out;
+  for (std::string_view word : {" inclusive", " incl.", " incl"}) {
+    const auto m = head.rfind(word);
+    if (m != std::string::npos && m + word.size() == head.size()) head.erase(m);
+  }
+  for (std::string_view every : {"(and every ws row)", "(and all ws rows)", "(and every rs row)", "(and all rs rows)",
+                                 "and all other ws rows", "and all other rs rows", "and every other ws row",
+                                 "and every ws row", "and all ws rows", "and all following ws rows", "and alt rows",
+                                 "and alt. rows", "and alternate rows", "and all alternate rows", "and every alternate row",
+                                 "and all even rows", "and every other row", "and all foll alt rows", "and all alt.", "and all alternate",
+                                 "and every alternate", "and alt.", "and alt", "and alternate"}) {
+    const auto m = head.find(every);
+    if (m != std::string::npos) {
+      out.every_other = true;
+      head.erase(m, every.size());
+    }
+  }
   for (const auto& [mark, side] : side_marks) {
     const auto m = head.find(mark);
     if (m != std::string::npos) {
@@ -135,7 +155,33 @@ std::optional<Label> head_rows(std::string head, std::string& problem) {
   const auto rows = numbers(head, problem);
   if (!rows) return std::nullopt;
   out.rows = *rows;
+  if (out.every_other && out.rows.size() != 1) return std::nullopt;
   return out;
+}
+
+// "Row 2: k2, *k1, p8* k3 - and every following wrong side row": the every-other mark
+// printed after the row's text.
+void every_other_in_body(Label& l) {
+  static const std::regex mark(
+      R"([\s,;.-]*(?:and|&)\s+(?:every|all)\s+(?:following\s+|other\s+)?(?:ws|wrong side|wrong-side|alternate|alt\.?)\s+rows?[\s.]*$)");
+  std::smatch m;
+  const std::string low = lower(l.body);
+  if (l.rows.size() != 1 || !std::regex_search(low, m, mark)) return;
+  l.body.resize(static_cast<std::size_t>(m.position(0)));
+  l.every_other = true;
+}
+
+// A side printed at the start of a row's text, "Row 1: (WS) slip 1, ...": taken off.
+void side_in_body(Label& l) {
+  every_other_in_body(l);
+  const std::string low = lower(l.body);
+  for (const auto& [mark, side] : side_marks) {
+    if (low.rfind(mark, 0) == 0) {
+      l.side = side;
+      l.body = std::string(trim(std::string_view(l.body).substr(mark.size())));
+      return;
+    }
+  }
 }
 
 // "1st", "2nd", "23rd", "4th" as 1, 2, 23, 4: vintage leaflets number rows so.
@@ -172,6 +218,15 @@ std::size_t body_start(std::string_view l, std::size_t sep) {
 }
 
 bool noun_at(std::string_view l, std::size_t at, std::size_t& after) {
+  // "R1:", "R 2:": a row, where a number follows.
+  if (l.compare(at, 1, "r") == 0) {
+    std::size_t d = at + 1;
+    while (d < l.size() && l[d] == ' ') ++d;
+    if (d < l.size() && d - at <= 2 && std::isdigit(static_cast<unsigned char>(l[d]))) {
+      after = at + 1;
+      return true;
+    }
+  }
   for (std::string_view noun : {"rounds", "round", "rnds", "rnd", "rows", "row"}) {
     if (l.compare(at, noun.size(), noun) == 0 &&
         (at + noun.size() == l.size() || !std::isalpha(static_cast<unsigned char>(l[at + noun.size()])))) {
@@ -187,6 +242,9 @@ bool noun_at(std::string_view l, std::size_t at, std::size_t& after) {
 std::optional<std::vector<int>> repeated_rows(std::string_view body, std::string& problem) {
   std::string t = lower(trim(body));
   while (!t.empty() && (t.back() == '.' || std::isspace(static_cast<unsigned char>(t.back())))) t.pop_back();
+  // "Rep 1st and 2nd rows 3 times more", "... alternately": the label says how many rows.
+  static const std::regex how_often(R"(\s+(?:\d+\s+times|twice|once|alternately|inclusive|incl)(?:\s+more)?(?:\s+again)?$)");
+  t = std::regex_replace(t, how_often, "");
   constexpr std::string_view nouns[] = {"rows ", "row ", "rounds ", "round ", "rnds ", "rnd "};
   for (std::string_view verb : {"repeat ", "rep ", "work as ", "work ", "same as ", "as "}) {
     if (t.rfind(verb, 0) != 0) continue;
@@ -211,6 +269,25 @@ std::optional<std::vector<int>> repeated_rows(std::string_view body, std::string
   return std::nullopt;
 }
 
+// A label with no separator, "Row 1 (RS)   P2, k3" or "Row 15 P2, k6": the numbers, a
+// side perhaps, then words that read as a row (else it is no label: "Rows 1-4 form the
+// pattern" is a note).
+std::optional<Label> loose_label(std::string_view line, std::size_t after) {
+  static const std::regex head(
+      R"(^\s*((?:\d+\s*(?:,|&|and|to|-)?\s*)+)\s*(\((?:rs|ws|right side|wrong side)\)|\[(?:rs|ws)\]|rs|ws)?\s*(\((?:and )?(?:every|all)[^)]*\)|(?:and\s+)?(?:all|every)\s+(?:other\s+|following\s+)?(?:ws|rs|wrong side|right side)\s+rows?)?\s*[:.]*\s+)");
+  const std::string rest = lower(line.substr(after, std::min<std::size_t>(line.size() - after, 200)));
+  std::smatch m;
+  if (!std::regex_search(rest, m, head)) return std::nullopt;
+  std::string problem;
+  auto out = head_rows(m[1].str() + " " + m[3].str(), problem);
+  if (!out) return std::nullopt;
+  if (m[2].matched) out->side = m[2].str().find('w') != std::string::npos ? Side::wrong : Side::right;
+  out->body = std::string(trim(line.substr(after + static_cast<std::size_t>(m.length(0)))));
+  side_in_body(*out);
+  if (out->body.empty() || parse_row(out->body, {}, false).index() != 0) return std::nullopt;
+  return out;
+}
+
 // "Row 1 (RS): ...", "Rnds 2 and 4: ...", "Rows 1, 3 (WS). ...", and the vintage
 // "1st row.-K 2, p 2." and "2nd and 4th rows (wrong side): ..." (the line's typography
 // already plain, so an em dash is "-").
@@ -227,9 +304,10 @@ std::optional<Label> label(std::string_view line, std::string& problem) {
         continue;
       }
       out->body = std::string(trim(line.substr(body_start(l, sep))));
+      side_in_body(*out);
       return out;
     }
-    return std::nullopt;
+    return loose_label(line, after);
   }
   // The ordinal form: numbers first, then the noun.
   if (l.empty() || !std::isdigit(static_cast<unsigned char>(l[0]))) return std::nullopt;
@@ -243,6 +321,7 @@ std::optional<Label> label(std::string_view line, std::string& problem) {
       auto out = head_rows(head + " " + l.substr(after, sep - after), attempt);
       if (!out) continue;
       out->body = std::string(trim(line.substr(body_start(l, sep))));
+      side_in_body(*out);
       return out;
     }
     return std::nullopt;
@@ -254,7 +333,18 @@ std::optional<Label> label(std::string_view line, std::string& problem) {
 // and other notes in brackets at the end are dropped.
 std::string without_count(std::string text, std::optional<int>& count) {
   std::string_view t = trim(text);
-  while (!t.empty() && t.back() == '.') t = trim(t.substr(0, t.size() - 1));
+  // "..., purl to end. Turn work.": the turn is the row's end, as every row's is.
+  for (bool more = true; more;) {
+    more = false;
+    while (!t.empty() && (t.back() == '.' || t.back() == ';' || t.back() == ',')) t = trim(t.substr(0, t.size() - 1)), more = true;
+    for (std::string_view turn : {"turn work", "turn"}) {
+      if (t.size() > turn.size() && lower(t.substr(t.size() - turn.size())) == turn &&
+          !std::isalnum(static_cast<unsigned char>(t[t.size() - turn.size() - 1]))) {
+        t = trim(t.substr(0, t.size() - turn.size()));
+        more = true;
+      }
+    }
+  }
   if (t.empty() || t.back() != ')') return std::string(t);
   const std::size_t open = t.rfind('(');
   if (open == std::string_view::npos) return std::string(t);
@@ -291,15 +381,40 @@ class Reader {
     std::optional<int> count;
     const std::string text = again ? std::string() : without_count(l.body, count);
     if (!again && text.empty()) return fail(line, "row " + std::to_string(l.rows.front()) + " has no stitches after its label");
-    if (again && again->size() != l.rows.size())
+    // "3rd to 8th rows: Rep 1st and 2nd rows 3 times more": the rows repeated in turn.
+    if (again && again->size() > l.rows.size())
       return fail(line, std::to_string(l.rows.size()) + " rows repeat " + std::to_string(again->size()) +
                             "; give as many rows as they repeat (Rows 5-8: Repeat rows 1-4)");
+    // "Rib: Row 1 ... Pattern: Row 1 ...": a row 1 after a part of two rows or more starts
+    // the next part, numbered afresh (after a single row it is more likely a typo).
+    if (l.rows.front() == 1 && (given_.count(1) || emitted_.count(1)) && !again && given_.size() + emitted_.size() >= 2) {
+      if (!flush()) return false;
+      if (!given_.empty()) return gap();
+      emitted_.clear();
+      other_.reset();
+      next_number_ = 0;
+    }
     for (std::size_t i = 0; i < l.rows.size(); ++i) {
       const int n = l.rows[i];
       if (given_.count(n) || emitted_.count(n)) return fail(line, "row " + std::to_string(n) + " is given twice");
-      given_[n] = Given{line, text, l.side, count, again ? std::optional<int>((*again)[i]) : std::nullopt};
+      given_[n] = Given{line, text, l.side, count, again ? std::optional<int>((*again)[i % again->size()]) : std::nullopt};
+    }
+    if (l.every_other) {
+      if (other_) return fail(line, "a second text for every other row; the one at line " + std::to_string(other_->given.line + 1) + " is given");
+      other_ = Other{l.rows.front() % 2, given_[l.rows.front()]};
     }
     return true;
+  }
+
+  // "On WS rows, work sts as they appear": the text of every wrong-side row not given.
+  bool wrong_side_rows(int line, const std::string& text) {
+    if (other_) return fail(line, "a second text for every other row; the one at line " + std::to_string(other_->given.line + 1) + " is given");
+    other_ = Other{-1, Given{line, text, Side::wrong, std::nullopt, std::nullopt}};
+    return true;
+  }
+
+  void define(GlossaryEntry e) {
+    if (out_.glossary.size() < max_glossary) out_.glossary.push_back(std::move(e));
   }
 
   // "Repeat rows 3-6." where it stands: those rows once more.
@@ -314,6 +429,12 @@ class Reader {
       r.repeat = true;
       out_.rows.push_back(std::move(r));
     }
+    return true;
+  }
+
+  // A line that is not a row, whatever it reads as: skipped with a warning.
+  bool note(int line, std::string_view text_line) {
+    out_.skipped.push_back({line, "not a row, skipped: " + quote_row(text_line)});
     return true;
   }
 
@@ -335,6 +456,13 @@ class Reader {
     return true;
   }
 
+  // The first row given after a row never given.
+  bool gap() {
+    const auto& [n, g] = *given_.begin();
+    return fail(g.line, "row " + std::to_string(n) + " is given but row " + std::to_string(next_number_) +
+                            " never is; number the rows without a gap");
+  }
+
   bool fail(int line, std::string message) {
     error_ = KnitspeakNote{line, std::move(message)};
     return false;
@@ -342,10 +470,13 @@ class Reader {
 
   std::variant<Knitspeak, KnitspeakNote> finish() {
     if (error_ || !flush()) return *error_;
+    // A text for every other row, after a last row of the other side: the pair completed.
+    if (other_ && given_.empty() && next_number_ > 1 && parity(next_number_) == other_parity() && !emit(next_number_, other_->given))
+      return *error_;
+    for (KnitspeakRow& r : out_.rows) r.text = with_crosses_in_words(with_glossary(r.text, out_.glossary));
     if (!given_.empty()) {
-      const auto& [n, g] = *given_.begin();
-      return KnitspeakNote{g.line, "row " + std::to_string(n) + " is given but row " + std::to_string(next_number_) +
-                                       " never is; number the rows without a gap"};
+      gap();
+      return *error_;
     }
     return std::move(out_);
   }
@@ -372,6 +503,7 @@ class Reader {
 
   bool emit(int number, const Given& g) {
     if (!room(g.line, g.text.size())) return false;
+    if (out_.rows.empty() && g.side) first_side_ = *g.side;
     KnitspeakRow r;
     r.line = g.line;
     r.number = number;
@@ -394,21 +526,43 @@ class Reader {
     return true;
   }
 
-  // Works the numbered rows given so far, in order, from the next one on.
+  // Works the numbered rows given so far, in order, from the next one on; a row not given
+  // is the text for every other row, where there is one for its side.
   bool flush() {
     if (next_number_ == 0 && !given_.empty()) next_number_ = given_.begin()->first;
-    for (auto it = given_.find(next_number_); it != given_.end(); it = given_.find(next_number_)) {
-      if (!emit(next_number_, it->second)) return false;
-      given_.erase(it);
+    while (!given_.empty()) {
+      const auto it = given_.find(next_number_);
+      if (it != given_.end()) {
+        if (!emit(next_number_, it->second)) return false;
+        given_.erase(it);
+      } else if (other_ && parity(next_number_) == other_parity()) {
+        if (!emit(next_number_, other_->given)) return false;
+      } else {
+        break;
+      }
       ++next_number_;
     }
     return true;
+  }
+
+  static int parity(int n) { return n % 2; }
+  // The rows the text for every other row stands for: those of its own row's parity, or
+  // the wrong-side rows (even, unless the first row was printed as a wrong-side row).
+  int other_parity() const {
+    if (other_->parity >= 0) return other_->parity;
+    return first_side_ == Side::wrong ? 1 : 0;
   }
 
   std::span<const std::string> yarn_ids_;
   Knitspeak out_;
   std::map<int, Given> given_;          // by number: rows are worked in number order
   std::map<int, std::size_t> emitted_;  // number -> index in out_.rows
+  struct Other {
+    int parity;  // of the rows it stands for; -1: the wrong-side rows
+    Given given;
+  };
+  std::optional<Other> other_;          // "Row 2 (and every WS row): ..."
+  Side first_side_ = Side::right;
   int next_number_ = 0;                 // the next numbered row to work; 0 until the first
   std::size_t text_bytes_ = 0;
   std::optional<KnitspeakNote> error_;
@@ -416,28 +570,116 @@ class Reader {
 
 }  // namespace
 
-std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, std::span<const std::string> yarn_ids) {
-  Reader reader(yarn_ids);
+namespace {
+
+// A paragraph that runs several rows together, "Cast on 34 sts. 1st ROW: K 2, ... 2nd
+// ROW: P across row.": cut before each label that follows a full stop or a semicolon.
+std::vector<std::string_view> paragraph_rows(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t from = 0;
+  for (std::size_t i = 1; i + 2 < line.size(); ++i) {
+    if ((line[i - 1] != '.' && line[i - 1] != ';' && line[i - 1] != ':') || line[i] != ' ') continue;
+    std::size_t j = i;
+    while (j < line.size() && line[j] == ' ') ++j;
+    const std::string head = lower(line.substr(j, std::min<std::size_t>(line.size() - j, 24)));
+    const bool sentence = line[i - 1] == '.' && head.rfind("repeat from", 0) != 0 && head.rfind("rep from", 0) != 0 &&
+                          head.rfind("rep. from", 0) != 0;
+    if (sentence && (head.rfind("repeat ", 0) == 0 || head.rfind("rep ", 0) == 0)) {  // "..., k 12. Repeat these 8 rows."
+      out.push_back(trim(line.substr(from, i - from)));
+      from = j;
+      continue;
+    }
+    const bool noun = head.rfind("row", 0) == 0 || head.rfind("rnd", 0) == 0 || head.rfind("round", 0) == 0;
+    const bool ordinal = !head.empty() && std::isdigit(static_cast<unsigned char>(head[0])) &&
+                         (head.find(" row") != std::string::npos || head.find(" rnd") != std::string::npos ||
+                          head.find(" round") != std::string::npos);
+    if (!noun && !ordinal) continue;
+    std::string problem;
+    if (!label(line.substr(j, std::min<std::size_t>(line.size() - j, 300)), problem)) continue;
+    out.push_back(trim(line.substr(from, i - from)));
+    from = j;
+  }
+  out.push_back(trim(line.substr(from)));
+  return out;
+}
+
+// "On WS rows, work sts as they appear", "All WS rows: purl": the text, if that is it.
+std::optional<std::string> wrong_side_text(std::string_view line) {
+  const std::string l = lower(line);
+  for (std::string_view lead : {"on all ws rows", "on ws rows", "on wrong side rows", "on all wrong side rows", "all ws rows",
+                                "every ws row", "ws rows", "all even rows", "even rows", "even-numbered rows",
+                                "all even-numbered rows", "wrong side rows"}) {
+    if (l.rfind(lead, 0) != 0) continue;
+    std::size_t at = lead.size();
+    while (at < l.size() && (l[at] == ':' || l[at] == ',' || l[at] == '-' || l[at] == ' ')) ++at;
+    if (at == lead.size() || at >= l.size()) return std::nullopt;
+    return std::string(trim(line.substr(at)));
+  }
+  return std::nullopt;
+}
+
+// The block's lines, plain: typography as ASCII, "»" bullets as line breaks, and a line
+// that breaks off after a comma or a semicolon, or before "from *", joined to the next.
+std::vector<std::pair<int, std::string>> plain_lines(std::string_view block) {
+  std::vector<std::pair<int, std::string>> out;
+  bool open = false;  // the last line broke off mid-row
   int line_number = 0;
   for (std::size_t start = 0; start <= block.size(); ++line_number) {
     const std::size_t end = std::min(block.find('\n', start), block.size());
     const std::string_view raw = block.substr(start, end - start);
     start = end + 1;
-    const std::string plain = typography_as_ascii(without_bullet(trim(raw)));
-    const std::string_view line = trim(plain);
-    if (line.empty() || is_fence(line)) continue;
-    std::string problem;  // a row list that cannot be honoured
+    std::string plain = typography_as_ascii(without_bullet(trim(raw)));
+    for (std::size_t at; (at = plain.find("\u00BB")) != std::string::npos;) plain.replace(at, 2, "\n");
+    std::size_t from = 0;
+    for (std::size_t cut = 0; cut <= plain.size(); ++cut) {
+      if (cut < plain.size() && plain[cut] != '\n') continue;
+      const std::string piece(trim(std::string_view(plain).substr(from, cut - from)));
+      from = cut + 1;
+      if (piece.empty()) continue;
+      const std::string low = lower(piece);
+      std::string problem;
+      const bool labelled = label(std::string_view(piece).substr(0, std::min<std::size_t>(piece.size(), 300)), problem).has_value();
+      if (!out.empty() && !labelled && (open || low.rfind("from *", 0) == 0)) out.back().second += " " + piece;
+      else out.emplace_back(line_number, piece);
+      const std::string& last = out.back().second;
+      std::string why;
+      const auto l = label(std::string_view(last).substr(0, std::min<std::size_t>(last.size(), 300)), why);
+      // "Row 1: (RS)" with its stitches on the next line.
+      const bool bare_label = l && last.size() <= 300 && trim(l->body).empty();
+      open = (bare_label || (!last.empty() && (last.back() == ',' || last.back() == ';'))) && last.size() < max_row_text_bytes;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::variant<Knitspeak, KnitspeakNote> read_knitspeak(std::string_view block, std::span<const std::string> yarn_ids) {
+  Reader reader(yarn_ids);
+  for (const auto& [line_number, plain] : plain_lines(block)) {
     bool ok = true;
-    if (const auto l = label(line, problem)) {
-      ok = reader.label(line_number, *l);
-    } else if (!problem.empty()) {
-      ok = reader.fail(line_number, problem);
-    } else if (const auto again = repeated_rows(line, problem)) {
-      ok = reader.repeat(line_number, *again);
-    } else if (!problem.empty()) {
-      ok = reader.fail(line_number, problem);
-    } else {
-      ok = reader.unnumbered(line_number, line);
+    for (const std::string_view piece : paragraph_rows(trim(plain))) {
+      const std::string_view line = without_bullet(piece);
+      if (line.empty() || is_fence(line)) continue;
+      std::string problem;  // a row list that cannot be honoured
+      if (const auto l = label(line, problem)) {
+        ok = reader.label(line_number, *l);
+      } else if (!problem.empty()) {
+        ok = reader.fail(line_number, problem);
+      } else if (const auto again = repeated_rows(line, problem)) {
+        ok = reader.repeat(line_number, *again);
+      } else if (!problem.empty()) {
+        ok = reader.fail(line_number, problem);
+      } else if (const auto text = wrong_side_text(line)) {
+        std::optional<int> count;
+        ok = reader.wrong_side_rows(line_number, without_count(*text, count));
+      } else if (auto entry = read_glossary_line(line, line_number)) {
+        if (!entry->known) reader.define(std::move(*entry));
+        ok = reader.note(line_number, line);  // a glossary line is no row
+      } else {
+        ok = reader.unnumbered(line_number, line);
+      }
+      if (!ok) break;
     }
     if (!ok) break;
   }

@@ -8,6 +8,9 @@
 //   Repeat rows 3-6.                           those rows once more, where the line stands
 //   Row 9: k2, yo, k2tog, k1 (6 sts).          a stated stitch count, checked
 //   k2, p2 to end of round.                    an unnumbered line of stitches: a row
+//   1st row.—K 2, p 2.  3rd row: As 1st row.  vintage labels, several to a paragraph
+//   Row 2 (and every WS row): purl.            a text for every row of that side not given
+//   C4Bp: slip 2 sts to cn, hold to back, k2, p2 from cn.   a glossary line (glossary.hpp)
 // Rows are worked in number order; a heading, a note or any other line that is not a row
 // is skipped with a warning. Bullets ("-", "•") and full stops are tolerated.
 #pragma once
@@ -19,6 +22,7 @@
 #include <variant>
 #include <vector>
 
+#include "language/glossary.hpp"
 #include "pattern.hpp"
 
 namespace knitc::language {
@@ -38,8 +42,10 @@ struct KnitspeakNote {
 };
 
 struct Knitspeak {
-  std::vector<KnitspeakRow> rows;     // in working order, repeats written out
+  std::vector<KnitspeakRow> rows;     // in working order, repeats written out; the
+                                      // glossary's abbreviations in the names they stand for
   std::vector<KnitspeakNote> skipped; // lines that are not rows: the warnings
+  std::vector<GlossaryEntry> glossary;  // the abbreviations the text defines
 };
 
 // Reads a block. `yarn_ids` as for parse_row (an unnumbered line is a row only if it

@@ -32,12 +32,14 @@ constexpr ProsePhrase prose[] = {
     {"with the yarn in front", "wyif"}, {"with the yarn at the front", "wyif"}, {"with yarn at the front", "wyif"},
     {"keeping the yarn in front", "wyif"}, {"keeping yarn in front", "wyif"}, {"keeping yarn at front", "wyif"},
     {"with yarn in front", "wyif"}, {"with yarn at front", "wyif"}, {"with yarn forward", "wyif"},
-    {"with yarn to front", "wyif"}, {"yarn in front", "wyif"}, {"wyf", "wyif"},
+    {"with yarn to front", "wyif"}, {"holding working yarn in front", "wyif"}, {"holding the yarn in front", "wyif"},
+    {"holding yarn in front", "wyif"}, {"with working yarn in front", "wyif"}, {"yarn in front", "wyif"}, {"wyf", "wyif"},
     {"with the yarn in back", "wyib"}, {"with the yarn at the back", "wyib"}, {"with yarn at the back", "wyib"},
     {"keeping the yarn at the back", "wyib"}, {"keeping the yarn in back", "wyib"}, {"keeping yarn at back", "wyib"},
     {"keeping yarn in back", "wyib"}, {"keeping yarn behind", "wyib"}, {"with yarn in back", "wyib"},
     {"with yarn at back", "wyib"}, {"with yarn behind", "wyib"}, {"with yarn to back", "wyib"},
-    {"yarn in back", "wyib"}, {"yarn at back", "wyib"}, {"wyb", "wyib"},
+    {"holding working yarn in back", "wyib"}, {"holding the yarn in back", "wyib"}, {"holding yarn in back", "wyib"},
+    {"with working yarn in back", "wyib"}, {"yarn in back", "wyib"}, {"yarn at back", "wyib"}, {"wyb", "wyib"},
     {"as if to knit", "kwise"}, {"knitwise", "kwise"}, {"knit-wise", "kwise"}, {"knit wise", "kwise"},
     {"k-wise", "kwise"}, {"kw", "kwise"},
     {"as if to purl", "pwise"}, {"purlwise", "pwise"}, {"purl-wise", "pwise"}, {"purl wise", "pwise"},
@@ -57,6 +59,22 @@ constexpr ProsePhrase prose[] = {
     {"wool over", "yo"}, {"wfwd", "yo"}, {"wfd", "yo"}, {"wrn", "yo"}, {"wf", "yo"},
     // "rep from *, ending k1": what closes the row follows, as after a comma.
     {"ending with", ","}, {"ending in", ","}, {"ending", ","}, {"end with", ","},
+    // How far: "p across row", "k until last 5 sts", "knit all stitches", "rep from * cont to end".
+    {"across the row", "to end"}, {"across row", "to end"}, {"across the round", "to end"}, {"across round", "to end"},
+    {"across rnd", "to end"}, {"across to", "to"}, {"across", "to end"}, {"until", "to"}, {"all stitches", "to end"},
+    {"all sts", "to end"}, {"continuing", ""}, {"cont", ""},
+    // Vintage rows in words.
+    {"plain knitting", "k to end"}, {"knit plain", "k to end"}, {"pearl knitting", "p to end"},
+    {"purl knitting", "p to end"}, {"pearl", "purl"}, {"all the way to end", "to end"},
+    // Counts in words: "knit two together", "to last three sts".
+    {"one", "1"}, {"two", "2"}, {"three", "3"}, {"four", "4"}, {"five", "5"}, {"six", "6"}, {"seven", "7"},
+    {"eight", "8"}, {"nine", "9"}, {"ten", "10"}, {"eleven", "11"}, {"twelve", "12"}, {"eighteen", "18"},
+    // The *repeat closed in words: "repeat between *'s", "repeat *-* to end".
+    {"repeat between *'s", "rep from *"}, {"rep between *'s", "rep from *"}, {"repeat between *s", "rep from *"},
+    {"rep between *s", "rep from *"}, {"repeat from *-*", "rep from *"}, {"rep from *-*", "rep from *"},
+    {"repeat *-*", "rep from *"}, {"rep *-*", "rep from *"},
+    // "k all": the rest of the row.
+    {"all", "to end"},
 };
 
 // `phrase` (lower case) at `at` of `low` (the text lower-cased), as whole words.
@@ -151,7 +169,7 @@ std::string_view canonical_word(std::string_view w) {
   if (l == "knit") return "k";
   if (l == "purl") return "p";
   if (l == "slip" || l == "slipped") return "sl";
-  if (l == "st" || l == "sts" || l == "stitch" || l == "stitches" || l == "the") return "";
+  if (l == "st" || l == "sts" || l == "stitch" || l == "stitches" || l == "the" || l == "next") return "";
   return w;
 }
 
@@ -225,7 +243,44 @@ std::string join(std::span<const std::string_view> words) {
 
 }  // namespace
 
-std::string normalise(std::string_view text) { return replace_phrases(without_dots(typography_as_ascii(text))); }
+namespace {
+
+// "repeat [k5, sl5 wyib] across": the bracket says what repeats; the word goes.
+std::string without_repeat_before_bracket(std::string s) {
+  const std::string low = lower(s);
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    bool dropped = false;
+    for (std::string_view word : {"repeat", "rep"}) {
+      if (!phrase_at(low, i, word)) continue;
+      std::size_t j = i + word.size();
+      while (j < s.size() && space(s[j])) ++j;
+      if (j < s.size() && (s[j] == '[' || s[j] == '(')) {
+        i = j;
+        dropped = true;
+      }
+      break;
+    }
+    if (!dropped) out += s[i++];
+  }
+  return out;
+}
+
+// "to last 6: P4": a colon inside a row's text parts two instructions, as a comma does.
+std::string without_colons(std::string s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == ':' && (i + 1 == s.size() || space(s[i + 1]))) s[i] = ',';
+    // "k1, p1 - all the way across": a dash between words parts nothing.
+    if (s[i] == '-' && i > 0 && space(s[i - 1]) && i + 1 < s.size() && space(s[i + 1])) s[i] = ' ';
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string normalise(std::string_view text) {
+  return without_repeat_before_bracket(replace_phrases(without_colons(without_dots(typography_as_ascii(text)))));
+}
 
 std::span<const AmbiguousSpelling> ambiguous_spellings() { return ambiguous_table; }
 

@@ -75,7 +75,20 @@ std::optional<std::string> Work::work_text(const RowText& text, std::string_view
   }
   auto worked = work_row(text, source, live_, row);
   if (auto* e = std::get_if<TextError>(&worked)) return e->message;
-  auto ops = face_view(std::get<std::vector<Worked>>(worked), side_of(row), yarn_);
+  std::vector<Worked>& stitches = std::get<std::vector<Worked>>(worked);
+  for (std::size_t i = 0; i < stitches.size(); ++i) {
+    Worked& w = stitches[i];
+    if (!w.edge) continue;
+    const bool first = i == 0, last = i + 1 == stitches.size();
+    if (!first && !last)
+      return "row " + std::to_string(row) + " " + quote_row(source) +
+             ": an edge stitch belongs at the start or the end of a row, not in its middle";
+    const char* name = "k";
+    if (selvedge_ == Selvedge::chain && first) name = "sl wyib";
+    if (selvedge_ == Selvedge::knit && side_of(row) == Side::wrong) name = "p";
+    w = {stitch_id(name), w.yarn, false};
+  }
+  auto ops = face_view(stitches, side_of(row), yarn_);
   if (auto* e = std::get_if<TextError>(&ops)) return "row " + std::to_string(row) + " " + quote_row(source) + " is a wrong-side row: " + e->message;
   return add(std::move(std::get<std::vector<Op>>(ops)), where);
 }

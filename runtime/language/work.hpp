@@ -15,6 +15,12 @@
 
 namespace knitc::language {
 
+// How an edge stitch ("edge st", "selvedge st", "sel st") is worked: knitted at both ends
+// of every row (garter, the default: a ridge every other row); the first slipped knitwise
+// and the last knitted (chain: one long loop every two rows); or knitted on right-side
+// rows and purled on wrong-side ones (knit: the edge shows as a knit stitch on the face).
+enum class Selvedge { garter, chain, knit };
+
 class Work {
  public:
   struct Limits {
@@ -40,6 +46,8 @@ class Work {
   // Each returns what is wrong, or nothing when done; a call that fails changes nothing.
   std::optional<std::string> cast_on(int stitches, int yarn, int line);
   void change_yarn(int yarn) { yarn_ = yarn; }
+  void set_selvedge(Selvedge s) { selvedge_ = s; }
+  Selvedge selvedge() const { return selvedge_; }
   // Row 1 is worked from the wrong side (knitspeak's "Row 1 (WS):"); before any row.
   std::optional<std::string> start_on_wrong_side();
   // Why no row can be worked now ("no live stitches ..."), or nothing.
@@ -76,6 +84,7 @@ class Work {
   long long loops_ = 0;
   int cast_on_line_ = 0, bind_off_line_ = 0;
   bool wrong_side_first_ = false;
+  Selvedge selvedge_ = Selvedge::garter;
   std::vector<bool> purl_faced_;  // per live stitch, face order: shows as a purl on the face
 };
 

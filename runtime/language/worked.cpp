@@ -95,7 +95,8 @@ std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::
   }
 
   const int a = consumed(before), b = consumed(star), s = consumed(after);
-  if (text.to_last && *text.to_last != s)
+  // "rep from * to end, ending k2" is the repeat filling what the closing stitches leave.
+  if (text.to_last && *text.to_last != s && *text.to_last != 0)
     return TextError{name + " repeats to the last " + stitches(*text.to_last) + " but " + stitches(s) +
                      " follow the repeat; make the two agree"};
   if (b == 0) return TextError{name + ": the *repeat works no stitches"};

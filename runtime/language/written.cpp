@@ -99,18 +99,42 @@ class Parser {
       split_open_repeat(r);
     } else if (peek().kind == Kind::star) {
       next();
-      r.star = sequence();
+      Sequence star = sequence();
       if (open_) return fail("a repeat inside a *repeat; write one repeat only");
-      if (peek().kind == Kind::star) next();  // "*k2, p2*; rep from *"
-      // "; rep from *" as the core language writes it, or printed ", repeat from *".
-      if (peek().kind == Kind::semicolon || peek().kind == Kind::comma) next();
-      else if (peek().kind != Kind::word) return fail("a *repeat needs \"; rep from *\" after it");
-      if (!repeat_clause(r)) return *error_;
-      if (peek().kind == Kind::comma) {
-        next();
-        r.after = sequence();
+      const bool closed = peek().kind == Kind::star;
+      if (closed) next();  // "*k2, p2*; rep from *"
+      if (closed && counted_words()) {
+        // "*K2, P2* 11 times": the stars bracket a group worked that many times.
+        Element group;
+        group.is_group = true;
+        group.body = std::move(star);
+        group.count = group_count();
+        if (error_) return *error_;
+        r.before.push_back(std::move(group));
+        Sequence rest = sequence();
+        if (open_) open_->element += r.before.size();
+        r.before.insert(r.before.end(), std::make_move_iterator(rest.begin()), std::make_move_iterator(rest.end()));
+        if (open_) split_open_repeat(r);
+      } else {
+        r.star = std::move(star);
+        // "; rep from *" as the core language writes it, or printed ", repeat from *".
+        if (peek().kind == Kind::semicolon || peek().kind == Kind::comma) next();
+        else if (peek().kind != Kind::word && !(closed && peek().kind == Kind::end))
+          return fail("a *repeat needs \"; rep from *\" after it");
+        const bool said = peek().kind == Kind::word && (is_repeat_word(peek().text) || lower(peek().text) == "to");
+        if (closed && !said) {
+          // "*k4, k3tog, yo, p1* k2": the stars close the repeat, and the row's end follows.
+          r.after = sequence();
+        } else if (!repeat_clause(r)) {
+          return *error_;
+        }
+        if (peek().kind == Kind::comma || peek().kind == Kind::semicolon) {
+          next();
+          r.after = sequence();
+        }
       }
     }
+    while (peek().kind == Kind::semicolon || peek().kind == Kind::comma) next();  // "...k5;" closing the row
     if (error_) return *error_;
     if (peek().kind == Kind::close) return fail(std::string("'") + std::string(peek().text) + "' without a matching opening bracket");
     if (peek().kind == Kind::star) return fail("a row can have one *repeat only");
@@ -128,6 +152,11 @@ class Parser {
     return *error_;
   }
 
+  static bool stitch_words(std::string_view w) {
+    const std::string l = lower(w);
+    return l == "st" || l == "sts" || l == "stitch" || l == "stitches";
+  }
+
   static bool is_repeat_word(std::string_view w) {
     const std::string l = lower(w);
     return l == "rep" || l == "repeat";
@@ -137,13 +166,19 @@ class Parser {
   bool repeat_clause(RowText& r) {
     std::vector<std::string> words;
     while (peek().kind == Kind::word) words.push_back(lower(next().text));
-    if (words.size() < 2 || !is_repeat_word(words[0]) || words[1] != "from" || peek().kind != Kind::star) {
+    if (words.size() >= 2 && is_repeat_word(words[0]) && words[1] == "from" && peek().kind == Kind::star) {
+      next();
+      words.clear();
+      while (peek().kind == Kind::word) words.push_back(lower(next().text));
+    } else if (!words.empty() && is_repeat_word(words[0]) && (words.size() == 1 || words[1] == "to")) {
+      words.erase(words.begin());  // "*yo, p1* rep to end": the stars say where from
+      if (words.empty() && peek().kind == Kind::star) next();  // "*k1, p8 repeat* k3"
+    } else if (!words.empty() && words[0] == "to") {
+      // "*K1, P1* across" (read "to end"): the stars and how far
+    } else {
       fail("after \";\" write \"rep from *\"");
       return false;
     }
-    next();
-    words.clear();
-    while (peek().kind == Kind::word) words.push_back(lower(next().text));
     if (words.empty() || (words.size() == 1 && words[0] == "across")) return true;
     if (const auto to = to_clause(words)) {
       r.to_last = *to;
@@ -159,7 +194,14 @@ class Parser {
   // "to last [N] st(s)", "to N st(s) before end [of ...]"; nothing if the words say
   // something else.
   static std::optional<int> to_clause(std::span<const std::string> w) {
-    auto is_st = [](const std::string& x) { return x == "st" || x == "sts" || x == "stitch" || x == "stitches"; };
+    auto is_st = [](const std::string& x) {
+      return x == "st" || x == "sts" || x == "stitch" || x == "stitches" || x == "stitchs";
+    };
+    // "to the last 4 sts"
+    std::vector<std::string> kept;
+    for (const std::string& x : w)
+      if (x != "the") kept.push_back(x);
+    w = kept;
     auto end_of = [](std::span<const std::string> rest) {
       return rest.empty() || (rest.size() == 2 && rest[0] == "of" &&
                               (rest[1] == "row" || rest[1] == "round" || rest[1] == "rnd" || rest[1] == "needle"));
@@ -168,6 +210,7 @@ class Parser {
     if (w[1] == "end" && end_of(w.subspan(2))) return 0;
     if (w[1] == "last" && w.size() == 4 && whole(w[2]) && is_st(w[3])) return whole(w[2]);
     if (w[1] == "last" && w.size() == 3 && is_st(w[2])) return 1;
+    if (w[1] == "last" && w.size() == 3 && whole(w[2])) return whole(w[2]);  // "to last 6: p4"
     if (w.size() >= 5 && whole(w[1]) && is_st(w[2]) && w[3] == "before" && w[4] == "end" && end_of(w.subspan(5)))
       return whole(w[1]);
     return std::nullopt;
@@ -177,10 +220,23 @@ class Parser {
     std::string t = lower(text);
     while (!t.empty() && (t.back() == '.' || std::isspace(static_cast<unsigned char>(t.back())))) t.pop_back();
     while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.erase(t.begin());
+    // "... as they appear and yo's P": a yarn over shows as a knit stitch, so purling it
+    // from the wrong side is working it as it appears.
+    for (std::string_view yos : {" and yo's p", " and yos p", " and yo's purl", " and purl the yo's", " and purl the yos",
+                                 ", purling the yo's", ", purling the yos", " and purl yo's", " and purl yos"}) {
+      if (t.size() > yos.size() && t.compare(t.size() - yos.size(), yos.size(), yos) == 0) {
+        t.resize(t.size() - yos.size());
+        break;
+      }
+    }
     for (const char* phrase : {"knit the knit sts and purl the purl sts", "k the k sts and p the p sts",
                                "knit the knit stitches and purl the purl stitches", "knit the knits and purl the purls",
                                "work sts as they appear", "work the sts as they appear", "work all sts as they appear",
-                               "k the knit sts and p the purl sts"})
+                               "k the knit sts and p the purl sts", "knit over knit, purl over purl",
+                               "knit over knit and purl over purl", "k over k, p over p", "knit the knits, purl the purls",
+                               "work in pattern as established", "work sts as set", "knit the knit stitches, purl the purl stitches",
+                               "purl over purl, knit over knit", "purl over purl and knit over knit", "k over k and p over p",
+                               "work as appears", "work sts as they appear", "k the k and p the p"})
       if (t == phrase) return true;
     return false;
   }
@@ -246,6 +302,10 @@ class Parser {
           fail("an empty group \"()\"");
           break;
         }
+        // "(k5, k2tog, yo) rep to last 5 sts": the repeat word says nothing more.
+        if (peek().kind == Kind::word && is_repeat_word(peek().text) && pos_ + 1 < tokens_.size() &&
+            tokens_[pos_ + 1].kind == Kind::word && lower(tokens_[pos_ + 1].text) == "to")
+          next();
         if (peek().kind == Kind::word && lower(peek().text) == "to") {
           std::vector<std::string> clause;
           while (peek().kind == Kind::word) clause.push_back(lower(next().text));
@@ -261,18 +321,49 @@ class Parser {
       }
       if (t.kind != Kind::word || is_repeat_word(t.text)) break;
       std::vector<std::string_view> words;
-      while (peek().kind == Kind::word) words.push_back(next().text);
+      while (peek().kind == Kind::word && (words.empty() || !is_repeat_word(peek().text))) words.push_back(next().text);
       // "p2 to end of round": the stitch, then how far it repeats.
       const auto to = std::find_if(words.begin(), words.end(), [](std::string_view w) { return lower(w) == "to"; });
       std::vector<std::string> clause;
       for (auto w = to; w != words.end(); ++w) clause.push_back(lower(*w));
       if (to != words.begin() && to != words.end() && to_clause(clause)) words.erase(to, words.end());
       else clause.clear();
+      // "k 1, p 1 alternately": the two stitches, repeated across.
+      const bool alternately = words.size() > 1 && lower(words.back()) == "alternately";
+      if (alternately) words.pop_back();
       if (!item(words, seq)) break;
+      if (alternately) {
+        if (seq.size() < 2 || !clause.empty()) {
+          fail("\"alternately\" follows the two stitches that alternate: \"k1, p1 alternately\"");
+          break;
+        }
+        Element pair;
+        pair.is_group = true;
+        pair.body.assign(seq.end() - 2, seq.end());
+        seq.erase(seq.end() - 2, seq.end());
+        seq.push_back(std::move(pair));
+        const std::string to_end[] = {"to", "end"};
+        if (!open_repeat(to_end, seq, false)) fail("\"alternately\" is not understood here");
+        if (error_) break;
+        continue;
+      }
       if (!clause.empty()) open_repeat(clause, seq, last_counted_);
       if (error_) break;
     }
     return seq;
+  }
+
+  // Whether the words next are a group's count ("11 times", "twice", "x3"), read no further.
+  bool counted_words() const {
+    std::vector<std::string> words;
+    for (std::size_t i = pos_; i < tokens_.size() && tokens_[i].kind == Kind::word && words.size() < 3; ++i)
+      words.push_back(lower(tokens_[i].text));
+    if (words.empty()) return false;
+    const std::string& a = words[0];
+    if (a == "twice" || a == "once" || a == "thrice") return true;
+    if (a.size() > 1 && a[0] == 'x' && whole(std::string_view(a).substr(1))) return true;
+    if (a == "x" && words.size() > 1 && whole(words[1])) return true;
+    return whole(a) && words.size() > 1 && (words[1] == "times" || words[1] == "time" || words[1] == "x");
   }
 
   // After a group: "x6", "x 6", "6x", "6 times", "twice", "once", or nothing (once).
@@ -288,6 +379,7 @@ class Parser {
     else if (words.size() == 2 && words[1] == "x") n = whole(words[0]);
     else if (words.size() == 2 && (words[1] == "times" || words[1] == "time")) n = whole(words[0]);
     else if (words.size() == 1 && words[0] == "twice") n = 2;
+    else if (words.size() == 1 && words[0] == "thrice") n = 3;
     else if (words.size() == 1 && words[0] == "once") n = 1;
     if (!n) {
       pos_ = save;
@@ -316,6 +408,35 @@ class Parser {
     }
     // "sl1, k2tog, psso": passing the slipped stitch over makes the two one stitch.
     if (words.size() == 1 && (lower(words[0]) == "psso" || lower(words[0]) == "pass slipped stitch over")) return pass_over(seq);
+    const std::string spelled = lower(join(words));
+    if (is_marker(spelled)) return true;  // placed or slipped: no stitch is worked
+    if (is_edge_stitch(spelled)) {
+      Element e;
+      e.stitch = {stitch_id("k"), yarn.value_or(-1), true};
+      seq.push_back(e);
+      last_counted_ = false;
+      return true;
+    }
+    // "slip1, WYIF": a modifier on its own belongs to the stitch before it.
+    if (words.size() == 1 && !seq.empty() && !seq.back().is_group && seq.back().count == 1) {
+      for (std::string_view modifier : {"wyif", "wyib", "tbl", "kwise", "pwise"}) {
+        if (spelled != modifier) continue;
+        const auto with = read_stitch(std::string(stitch(seq.back().stitch.stitch).name) + " " + std::string(modifier));
+        if (const auto* r = std::get_if<Reading>(&with)) {
+          seq.back().stitch.stitch = r->stitch;
+          return true;
+        }
+      }
+    }
+    // "keeping yarn at front, k5": where the yarn is brought, and no stitch.
+    if (words.size() == 1 && (spelled == "wyif" || spelled == "wyib")) return true;
+    // "rep from *, end p3": what closes the row.
+    if (words.size() > 1 && lower(words[0]) == "end") return item(words.subspan(1), seq);
+    // "K last 2 sts": the stitch, that many times.
+    if (words.size() == 4 && lower(words[1]) == "last" && whole(words[2]) && stitch_words(words[3])) {
+      const std::string_view one[] = {words[0]};
+      return item(std::span<const std::string_view>(one), seq) && (seq.back().count = *whole(words[2]), true);
+    }
     // The stitch as printed: exact, squeezed ("K 2 tog"), or with a count run in ("sl1pw").
     const auto reading = read_stitch(words);
     if (const auto* a = std::get_if<Ambiguous>(&reading)) {
@@ -333,6 +454,15 @@ class Parser {
       id = r->stitch;
       count = r->count;
       explicit_count = r->count_written;
+    }
+    if (!id && words.size() > 1 && words.size() <= 8) {
+      // "p2 C8L", a comma left out: two stitches that each read.
+      for (std::size_t cut = 1; cut < words.size(); ++cut) {
+        if (!std::holds_alternative<Reading>(read_stitch(words.first(cut))) ||
+            !std::holds_alternative<Reading>(read_stitch(words.subspan(cut))))
+          continue;
+        return item(words.first(cut), seq) && item(words.subspan(cut), seq);
+      }
     }
     if (!id) {
       // "k2 C" with C not declared: say so rather than call it an unknown stitch.
@@ -394,6 +524,23 @@ class Parser {
 };
 
 }  // namespace
+
+bool is_edge_stitch(std::string_view spelled) {
+  const std::string l = lower(spelled);
+  for (std::string_view edge : {"edge st", "edge stitch", "selvedge st", "selvedge stitch", "selvedge", "selvage st",
+                                "selvage stitch", "selvage", "sel st", "sel s", "sel", "edge", "edge sts"})
+    if (l == edge) return true;
+  return false;
+}
+
+bool is_marker(std::string_view spelled) {
+  const std::string l = lower(spelled);
+  for (std::string_view marker : {"pm", "sm", "place marker", "slip marker", "place a marker", "move marker", "rm",
+                                  "remove marker", "rsf", "rs facing", "with rs facing", "wsf", "ws facing",
+                                  "with ws facing"})
+    if (l == marker) return true;
+  return false;
+}
 
 std::string quote_row(std::string_view text) {
   constexpr std::size_t longest = 60;

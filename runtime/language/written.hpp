@@ -37,6 +37,9 @@ struct TextError {
 struct Worked {
   StitchId stitch = 0;
   int yarn = -1;
+  // An edge stitch ("edge st", "selvedge st", "sel st"): k here, until the work (which
+  // knows the pattern's selvedge and the row's side) makes it what the selvedge is.
+  bool edge = false;
   bool operator==(const Worked&) const = default;
 };
 
@@ -58,6 +61,11 @@ struct RowText {
   // "knit the knit sts and purl the purl sts": every stitch worked as it shows.
   bool as_they_appear = false;
 };
+
+// Spellings of an edge stitch ("edge st", "selvedge st", "sel st", "sel s") and of
+// markers placed or slipped ("pm", "sm", "place marker"), which work no stitch; any case.
+bool is_edge_stitch(std::string_view spelled);
+bool is_marker(std::string_view spelled);
 
 // Parses a row's text. `yarn_ids` are the declared yarns a stitch may name after it
 // ("k2 B"); their index is the Worked::yarn of such a stitch. Without `hints` an unknown

@@ -1,0 +1,175 @@
+#include "language/glossary.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <regex>
+#include <variant>
+#include <vector>
+
+#include "language/spelling.hpp"
+#include "language/written.hpp"
+
+namespace knitc::language {
+
+namespace {
+
+constexpr std::size_t longest_abbreviation = 20;  // bytes: "sel s", "C4Bpk", "Front Cross"
+constexpr std::size_t longest_definition = 2000;  // bytes read of a definition
+constexpr std::size_t longest_cross_words = 300;  // bytes of a cross described in brackets
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; }
+
+int number_word(const std::string& w) {
+  if (w.empty()) return 1;
+  if (w == "one") return 1;
+  if (w == "two") return 2;
+  if (w == "three") return 3;
+  if (w == "four") return 4;
+  if (w.size() <= 2 && std::all_of(w.begin(), w.end(), [](unsigned char c) { return std::isdigit(c) != 0; }))
+    return std::stoi(w);
+  return 0;
+}
+
+// Where `word` (lower case) stands in `low` as a whole word, from `from`.
+std::size_t find_word(const std::string& low, const std::string& word, std::size_t from = 0) {
+  for (std::size_t at = low.find(word, from); at != std::string::npos; at = low.find(word, at + 1)) {
+    const bool starts = at == 0 || !word_char(low[at - 1]);
+    const bool ends = at + word.size() == low.size() || !word_char(low[at + word.size()]);
+    if (starts && ends) return at;
+  }
+  return std::string::npos;
+}
+
+}  // namespace
+
+std::optional<std::string> cross_in_words(std::string_view definition) {
+  const std::string d = lower(normalise(definition.substr(0, longest_definition)));
+  static const std::string count = R"((\d{1,2}|one|two|three|four)?)";
+  static const std::string st = R"((?:\s*(?:sts?|stitches))?)";
+  static const std::string cn = R"((?:the\s+|a\s+)?(?:cn|cable needle|cbn|dpn|third needle|stitch holder|holder))";
+  static const std::regex cross(
+      R"((?:to make a cable\s*,?\s*)?(?:cable \d+\s*sts?\s*,?\s*)?(?:sl|slip)(?:\s+off)?\s+(?:the\s+)?(?:next\s+|first\s+)?(\d{1,2}|one|two|three|four))" + st +
+      R"(\s+(?:to|onto|on to|on)\s+)" + cn + R"(\s*[,;]?\s*(?:and\s+)?(?:hold|leave|held|place|keep|keeping)\s+(?:it\s+|them\s+|)" + cn +
+      R"(\s+)?(?:to|in|at)\s+(?:the\s+)?(front|back))"
+      R"((?:\s+of\s+(?:the\s+)?work)?\s*[,;]?\s*(?:then\s+)?(k|p)\s*(?:the\s+)?(?:next\s+)?)" + count + st +
+      R"((?:\s+from\s+(?:the\s+)?(?:left|lh|left-hand)\s+needle)?\s*[,;]?\s*(?:then\s+)?(k|p)\s*(?:the\s+)?)" + count + st +
+      R"(\s+(?:from|off|on)\s+)" + cn + R"(\s*$)");
+  // "knit two" and "purl 2" as the k and p the pattern means.
+  static const std::regex knit(R"(\bknit\b)"), purl(R"(\bpurl\b)"), stop(R"([.;]+\s*$)");
+  std::string words = std::regex_replace(d, knit, "k");
+  words = std::regex_replace(words, purl, "p");
+  words = std::regex_replace(words, stop, "");
+  std::smatch m;
+  if (!std::regex_search(words, m, cross)) return std::nullopt;
+  const int held = number_word(m[1]);
+  const bool front = m[2] == "front";
+  const bool first_purl = m[3] == "p";
+  const int first = number_word(m[4]);
+  const bool held_purl = m[5] == "p";
+  const int from_cn = m[6].matched ? number_word(m[6]) : held;
+  if (held == 0 || first == 0 || from_cn != held) return std::nullopt;
+  std::string name;
+  // A right cross holds its stitches behind, and those worked first lie on top; a left
+  // cross holds them in front, on top. Purls only under the knit ones (a purl cross).
+  if (!front && !first_purl) name = std::to_string(first) + "/" + std::to_string(held) + (held_purl ? " RPC" : " RC");
+  else if (front && !held_purl) name = std::to_string(held) + "/" + std::to_string(first) + (first_purl ? " LPC" : " LC");
+  else return std::nullopt;
+  const auto id = find_stitch(name);
+  if (!id) return std::nullopt;
+  return std::string(stitch(*id).name);
+}
+
+std::optional<GlossaryEntry> read_glossary_line(std::string_view line, int number) {
+  const std::string_view t = trim(line);
+  std::size_t sep = std::string_view::npos, width = 0;
+  for (std::string_view mark : {":", "=", " - "}) {
+    const std::size_t at = t.find(mark);
+    if (at != std::string_view::npos && at < sep) sep = at, width = mark.size();
+  }
+  if (sep == std::string_view::npos) return std::nullopt;
+  const std::string_view abbreviation = trim(t.substr(0, sep));
+  const std::string_view definition = trim(t.substr(sep + width));
+  if (abbreviation.empty() || definition.empty() || abbreviation.size() > longest_abbreviation) return std::nullopt;
+  if (!word_char(abbreviation.front())) return std::nullopt;
+  if (std::count(abbreviation.begin(), abbreviation.end(), ' ') > 2) return std::nullopt;
+  for (char c : abbreviation)
+    if (!word_char(c) && c != ' ' && c != '/' && c != '&' && c != '-') return std::nullopt;
+  GlossaryEntry e{std::string(abbreviation), number, std::string(definition.substr(0, longest_definition)), std::nullopt};
+  // An abbreviation knitc reads already is the glossary explaining it: nothing to learn.
+  if (is_edge_stitch(abbreviation) || is_marker(abbreviation) ||
+      std::holds_alternative<Reading>(read_stitch(normalise(abbreviation)))) {
+    e.known = true;
+    return e;
+  }
+  // "Notes: B2 = Knit 2 stitches on each end": a heading before the definition.
+  if (definition.find_first_of(":=") != std::string_view::npos) {
+    if (auto inner = read_glossary_line(definition, number); inner && !inner->known) return inner;
+  }
+  const auto reading = read_stitch(normalise(e.definition));
+  if (const auto* r = std::get_if<Reading>(&reading); r && r->count == 1) e.means = std::string(stitch(r->stitch).name);
+  else e.means = cross_in_words(e.definition);
+  if (!e.means) {
+    // "Knit 2 stitches on each end for border": the stitches before the words that say where.
+    static const std::regex where(R"(\s+(?:on|at|for|in|of)\s+(?:each|both|the|every|a)\b.*$)", std::regex::icase);
+    const std::string stitches = std::regex_replace(e.definition.substr(0, 200), where, "");
+    if (stitches.size() < e.definition.size() && parse_row(stitches, {}, false).index() == 0) e.means = normalise(stitches);
+  }
+  return e;
+}
+
+std::string with_glossary(std::string_view text, std::span<const GlossaryEntry> glossary) {
+  std::vector<const GlossaryEntry*> read;
+  for (const GlossaryEntry& e : glossary)
+    if (e.means) read.push_back(&e);
+  std::stable_sort(read.begin(), read.end(),
+                   [](const GlossaryEntry* a, const GlossaryEntry* b) { return a->abbreviation.size() > b->abbreviation.size(); });
+  std::string out(text);
+  for (const GlossaryEntry* e : read) {
+    const std::string word = lower(e->abbreviation);
+    const std::string low = lower(out);
+    std::string next;
+    std::size_t from = 0;
+    for (std::size_t at = find_word(low, word); at != std::string::npos; at = find_word(low, word, at + word.size())) {
+      next.append(out, from, at - from);
+      next += *e->means;
+      from = at + word.size();
+    }
+    next.append(out, from, std::string::npos);
+    out = std::move(next);
+  }
+  return out;
+}
+
+std::string with_crosses_in_words(std::string_view text) {
+  std::string out(text);
+  for (std::size_t open = out.find('('); open != std::string::npos; open = out.find('(', open + 1)) {
+    // A cross in words is a sentence, not a page: look no further than its length.
+    const std::size_t window = std::min(out.size(), open + longest_cross_words);
+    const std::size_t found = std::string_view(out).substr(open, window - open).find(')');
+    if (found == std::string_view::npos) continue;
+    const std::size_t close = open + found;
+    const auto name = cross_in_words(std::string_view(out).substr(open + 1, close - open - 1));
+    if (!name) continue;
+    std::size_t from = out.find_last_of(",;*", open);
+    from = from == std::string::npos ? 0 : from + 1;
+    while (from < open && out[from] == ' ') ++from;
+    out.replace(from, close + 1 - from, *name);
+    open = from;
+  }
+  return out;
+}
+
+const GlossaryEntry* unread_abbreviation_in(std::string_view text, std::span<const GlossaryEntry> glossary) {
+  const std::string low = lower(text);
+  for (const GlossaryEntry& e : glossary)
+    if (!e.means && find_word(low, lower(e.abbreviation)) != std::string::npos) return &e;
+  return nullptr;
+}
+
+}  // namespace knitc::language
