@@ -270,7 +270,7 @@ const BadScript catalogue[] = {
      "t.lua:3: chart{}.legend[\"X\"]: 'C4' could mean C4F or C4B (a cable, but not which way it crosses); write the one the pattern means"},
     {"ambiguous_make_one_in_knitspeak",
      "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\nknitspeak [[\nRow 1 (RS): k1, make one, k3.\n]]\n",
-     "t.lua:4: row 1 \"k1, make one, k3\": 'make one' could mean m1 or yo (a lifted increase in modern patterns, a yarn over in Victorian and early 20th-century ones); write the one the pattern means"},
+     "t.lua:4: row 1 \"k1, make one, k3\": 'make 1' could mean m1 or yo (a lifted increase in modern patterns, a yarn over (\"make one by bringing the wool forward\") in Victorian and early 20th-century ones); write the one the pattern means"},
     {"ambiguous_purl_b",
      "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\nrow \"k1, p1b, k2\"\n",
      "t.lua:3: row 1 \"k1, p1b, k2\": 'p1b' could mean p tbl or p below (purl into the back of the stitch in British patterns, purl into the stitch below in Walker's and in brioche); write the one the pattern means"},

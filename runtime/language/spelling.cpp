@@ -191,7 +191,6 @@ constexpr AmbiguousSpelling ambiguous_table[] = {
     {"inc", "kfb|m1|yo", "an increase, but the pattern does not say which"},
     {"dec", "k2tog|ssk|p2tog", "a decrease, but the pattern does not say which"},
     {"make 1", "m1|yo", "a lifted increase in modern patterns, a yarn over (\"make one by bringing the wool forward\") in Victorian and early 20th-century ones"},
-    {"make one", "m1|yo", "a lifted increase in modern patterns, a yarn over in Victorian and early 20th-century ones"},
     {"kb", "k tbl|k below", "knit into the back of the stitch in British patterns, knit into the stitch below in Walker's and in brioche"},
     {"k1b", "k tbl|k below", "knit into the back of the stitch in British patterns, knit into the stitch below in Walker's and in brioche"},
     {"pb", "p tbl|p below", "purl into the back of the stitch in British patterns, purl into the stitch below in Walker's and in brioche"},
