@@ -30,30 +30,48 @@ int whole(const std::string& digits) {
   return std::stoi(digits);
 }
 
+// The text's lines, each short enough to search (a statement is a line, not a page).
+std::vector<std::string> short_lines(const std::string& low) {
+  std::vector<std::string> out;
+  for (std::size_t at = 0; at < low.size();) {
+    const std::size_t end = std::min(low.find('\n', at), low.size());
+    if (end - at <= 2000) out.push_back(low.substr(at, end - at));
+    at = end + 1;
+  }
+  return out;
+}
+
 // "Cast on 26 sts", "CO 26".
 std::optional<int> stated_cast_on(const std::string& low) {
-  static const std::regex cast(R"((?:^|[^a-z])(?:cast on|co|worked over)\s*:?\s+(\d{1,6})(?!\d))");
-  std::smatch m;
-  if (!std::regex_search(low, m, cast)) return std::nullopt;
-  const int n = whole(m[1]);
-  return n > 0 ? std::optional<int>(n) : std::nullopt;
+  static const std::regex cast(R"((?:^|[^a-z])(?:cast on|co|worked over)\s*(?:loosely\s+|a total of\s+)?:?\s*(\d{1,6})(?!\d))");
+  for (const std::string& line : short_lines(low)) {
+    std::smatch m;
+    if (!std::regex_search(line, m, cast)) continue;
+    const int n = whole(m[1]);
+    if (n > 0) return n;
+  }
+  return std::nullopt;
 }
 
 // "a multiple of 6 sts plus 3", "multiple of 12 + 2", "(multiple of 4)", "Multiple: 8+1".
 std::optional<std::pair<int, int>> stated_multiple(const std::string& low) {
   static const std::regex multiple(
       R"(mult(?:iple)?s?\s*(?:of|:)?\s*(\d{1,5})\s*(?:sts?|stitches)?(?:\s*,?\s*(?:\+|plus)\s*(\d{1,5}))?)");
-  std::smatch m;
-  if (!std::regex_search(low, m, multiple)) return std::nullopt;
-  const int n = whole(m[1]);
-  if (n <= 0) return std::nullopt;
-  return std::pair{n, m[2].matched ? whole(m[2]) : 0};
+  for (const std::string& line : short_lines(low)) {
+    std::smatch m;
+    if (!std::regex_search(line, m, multiple)) continue;
+    const int n = whole(m[1]);
+    if (n > 0) return std::pair{n, m[2].matched ? whole(m[2]) : 0};
+  }
+  return std::nullopt;
 }
 
 // Worked in the round when its rows are rounds ("Rnd 1:", "Round 3.").
 bool in_rounds(const std::string& low) {
-  static const std::regex round_label(R"((?:^|\n)\s*(?:rnds?|rounds?)\s*\d)");
-  return std::regex_search(low, round_label);
+  static const std::regex round_label(R"(^\s*(?:rnds?|rounds?)\s*\d)");
+  for (const std::string& line : short_lines(low))
+    if (std::regex_search(line, round_label)) return true;
+  return false;
 }
 
 // The script that works `text` as a printed pattern, all on its first line, so the text's

@@ -48,30 +48,39 @@ std::size_t find_word(const std::string& low, const std::string& word, std::size
 
 }  // namespace
 
-std::optional<std::string> cross_in_words(std::string_view definition) {
-  const std::string d = lower(normalise(definition.substr(0, longest_definition)));
-  static const std::string count = R"((\d{1,2}|one|two|three|four)?)";
+namespace {
+
+// A cross worked in words: "slip 2 sts to cn, hold in back, k2, p2 from cn", in the words
+// of words_of() below (k and p for knit and purl). Groups: 1 held, 2 front|back, 3 k|p
+// first, 4 its count, 5 k|p from the needle, 6 its count.
+const std::regex& cross_regex() {
+  static const std::string count = R"((\d{1,2})?)";
   static const std::string st = R"((?:\s*(?:sts?|stitches))?)";
   static const std::string cn = R"((?:the\s+|a\s+)?(?:cn|cable needle|cbn|dpn|third needle|stitch holder|holder))";
   static const std::regex cross(
-      R"((?:to make a cable\s*,?\s*)?(?:cable \d+\s*sts?\s*,?\s*)?(?:sl|slip)(?:\s+off)?\s+(?:the\s+)?(?:next\s+|first\s+)?(\d{1,2}|one|two|three|four))" + st +
-      R"(\s+(?:to|onto|on to|on)\s+)" + cn + R"(\s*[,;]?\s*(?:and\s+)?(?:hold|leave|held|place|keep|keeping)\s+(?:it\s+|them\s+|)" + cn +
-      R"(\s+)?(?:to|in|at)\s+(?:the\s+)?(front|back))"
-      R"((?:\s+of\s+(?:the\s+)?work)?\s*[,;]?\s*(?:then\s+)?(k|p)\s*(?:the\s+)?(?:next\s+)?)" + count + st +
-      R"((?:\s+from\s+(?:the\s+)?(?:left|lh|left-hand)\s+needle)?\s*[,;]?\s*(?:then\s+)?(k|p)\s*(?:the\s+)?)" + count + st +
-      R"(\s+(?:from|off|on)\s+)" + cn + R"(\s*$)");
-  // "knit two" and "purl 2" as the k and p the pattern means.
-  static const std::regex knit(R"(\bknit\b)"), purl(R"(\bpurl\b)"), stop(R"([.;]+\s*$)");
-  std::string words = std::regex_replace(d, knit, "k");
-  words = std::regex_replace(words, purl, "p");
-  words = std::regex_replace(words, stop, "");
-  std::smatch m;
-  if (!std::regex_search(words, m, cross)) return std::nullopt;
+      R"((?:to make a cable\s*,?\s*)?(?:cable \d+\s*sts?\s*,?\s*)?(?:sl|slip)(?:\s+off)?\s+(?:the\s+)?(?:next\s+|first\s+)?(\d{1,2}))" + st +
+          R"(\s+(?:to|onto|on to|on)\s+)" + cn + R"(\s*[,;]?\s*(?:and\s+)?(?:hold|leave|held|place|keep|keeping)\s+(?:it\s+|them\s+|)" + cn +
+          R"(\s+)?(?:to|in|at)\s+(?:the\s+)?(front|back))"
+          R"((?:\s+of\s+(?:the\s+)?work)?\s*[,;]?\s*(?:then\s+)?(k|p)\s*(?:the\s+)?(?:next\s+)?)" + count + st +
+          R"((?:\s+from\s+(?:the\s+)?(?:left|lh|ln|left-hand)(?:\s+needle)?)?\s*[,;]?\s*(?:then\s+)?(k|p)\s*(?:the\s+)?)" + count + st +
+          R"(\s+(?:from|off|on)\s+)" + cn,
+      std::regex::icase);
+  return cross;
+}
+
+// The text as cross_regex() reads it: normalised, "knit" and "purl" as k and p.
+std::string words_of(std::string_view text) {
+  static const std::regex knit(R"(\bknit\b)", std::regex::icase), purl(R"(\bpurl\b)", std::regex::icase);
+  return std::regex_replace(std::regex_replace(normalise(text), knit, "k"), purl, "p");
+}
+
+// The stitch table's name of the cross a match of cross_regex() describes.
+std::optional<std::string> cross_named(const std::smatch& m) {
   const int held = number_word(m[1]);
-  const bool front = m[2] == "front";
-  const bool first_purl = m[3] == "p";
-  const int first = number_word(m[4]);
-  const bool held_purl = m[5] == "p";
+  const bool front = lower(m[2].str()) == "front";
+  const bool first_purl = lower(m[3].str()) == "p";
+  const int first = m[4].matched ? number_word(m[4]) : held;
+  const bool held_purl = lower(m[5].str()) == "p";
   const int from_cn = m[6].matched ? number_word(m[6]) : held;
   if (held == 0 || first == 0 || from_cn != held) return std::nullopt;
   std::string name;
@@ -85,10 +94,22 @@ std::optional<std::string> cross_in_words(std::string_view definition) {
   return std::string(stitch(*id).name);
 }
 
+bool only_punctuation(std::string_view s) { return s.find_first_not_of(" \t.,;:") == std::string_view::npos; }
+
+}  // namespace
+
+std::optional<std::string> cross_in_words(std::string_view definition) {
+  if (definition.size() > longest_definition) return std::nullopt;
+  const std::string words = words_of(definition);
+  std::smatch m;
+  if (!std::regex_search(words, m, cross_regex()) || !only_punctuation(m.suffix().str())) return std::nullopt;
+  return cross_named(m);
+}
+
 std::optional<GlossaryEntry> read_glossary_line(std::string_view line, int number) {
   const std::string_view t = trim(line);
   std::size_t sep = std::string_view::npos, width = 0;
-  for (std::string_view mark : {":", "=", " - "}) {
+  for (std::string_view mark : {":", "=", " - ", "- "}) {
     const std::size_t at = t.find(mark);
     if (at != std::string_view::npos && at < sep) sep = at, width = mark.size();
   }
@@ -107,9 +128,13 @@ std::optional<GlossaryEntry> read_glossary_line(std::string_view line, int numbe
     e.known = true;
     return e;
   }
-  // "Notes: B2 = Knit 2 stitches on each end": a heading before the definition.
+  // "Notes: B2 = Knit 2 stitches on each end": a heading before the definition; and
+  // "Stitch Explanation: 4-st RC, Slip 2 sts to cn ...", the abbreviation before a comma.
   if (definition.find_first_of(":=") != std::string_view::npos) {
     if (auto inner = read_glossary_line(definition, number); inner && !inner->known) return inner;
+  } else if (const auto comma = definition.find(", "); comma != std::string_view::npos && comma <= longest_abbreviation) {
+    const std::string as_defined = std::string(definition.substr(0, comma)) + ": " + std::string(definition.substr(comma + 2));
+    if (auto inner = read_glossary_line(as_defined, number); inner && !inner->known && inner->means) return inner;
   }
   const auto reading = read_stitch(normalise(e.definition));
   if (const auto* r = std::get_if<Reading>(&reading); r && r->count == 1) e.means = std::string(stitch(r->stitch).name);
@@ -162,7 +187,24 @@ std::string with_crosses_in_words(std::string_view text) {
     out.replace(from, close + 1 - from, *name);
     open = from;
   }
-  return out;
+  // "*p3, slip 2 sts to CN and hold in front; k2 from LN, then k2 from CN; rep from *":
+  // a cross in words where it is worked, in a row short enough to read so.
+  if (out.size() > longest_definition) return out;
+  const std::string low = lower(out);
+  if (low.find("cn") == std::string::npos && low.find("cable needle") == std::string::npos &&
+      low.find("holder") == std::string::npos)
+    return out;
+  std::string words = words_of(out);
+  std::string rewritten;
+  std::smatch m;
+  bool any = false;
+  while (std::regex_search(words, m, cross_regex())) {
+    const auto name = cross_named(m);
+    rewritten += m.prefix().str() + (name ? *name : m.str());
+    any = any || name.has_value();
+    words = m.suffix().str();
+  }
+  return any ? rewritten + words : out;
 }
 
 const GlossaryEntry* unread_abbreviation_in(std::string_view text, std::span<const GlossaryEntry> glossary) {

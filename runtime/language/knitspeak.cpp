@@ -129,6 +129,7 @@ constexpr std::pair<std::string_view, Side> side_marks[] = {
 // A label's head (lower case, its noun taken off) as row numbers and a side, or nothing.
 std::optional<Label> head_rows(std::string head, std::string& problem) {
   Label out;
+  head.erase(std::unique(head.begin(), head.end(), [](char a, char b) { return a == ' ' && b == ' '; }), head.end());
   for (std::string_view word : {" inclusive", " incl.", " incl"}) {
     const auto m = head.rfind(word);
     if (m != std::string::npos && m + word.size() == head.size()) head.erase(m);
@@ -165,9 +166,10 @@ void every_other_in_body(Label& l) {
   static const std::regex mark(
       R"([\s,;.-]*(?:and|&)\s+(?:every|all)\s+(?:following\s+|other\s+)?(?:ws|wrong side|wrong-side|alternate|alt\.?)\s+rows?[\s.]*$)");
   std::smatch m;
-  const std::string low = lower(l.body);
+  const std::size_t tail = l.body.size() > 200 ? l.body.size() - 200 : 0;
+  const std::string low = lower(std::string_view(l.body).substr(tail));
   if (l.rows.size() != 1 || !std::regex_search(low, m, mark)) return;
-  l.body.resize(static_cast<std::size_t>(m.position(0)));
+  l.body.resize(tail + static_cast<std::size_t>(m.position(0)));
   l.every_other = true;
 }
 
@@ -244,6 +246,7 @@ std::optional<std::vector<int>> repeated_rows(std::string_view body, std::string
   while (!t.empty() && (t.back() == '.' || std::isspace(static_cast<unsigned char>(t.back())))) t.pop_back();
   // "Rep 1st and 2nd rows 3 times more", "... alternately": the label says how many rows.
   static const std::regex how_often(R"(\s+(?:\d+\s+times|twice|once|alternately|inclusive|incl)(?:\s+more)?(?:\s+again)?$)");
+  if (t.size() > 200) return std::nullopt;  // a repeat of rows is said in a few words
   t = std::regex_replace(t, how_often, "");
   constexpr std::string_view nouns[] = {"rows ", "row ", "rounds ", "round ", "rnds ", "rnd "};
   for (std::string_view verb : {"repeat ", "rep ", "work as ", "work ", "same as ", "as "}) {
@@ -284,7 +287,16 @@ std::optional<Label> loose_label(std::string_view line, std::size_t after) {
   if (m[2].matched) out->side = m[2].str().find('w') != std::string::npos ? Side::wrong : Side::right;
   out->body = std::string(trim(line.substr(after + static_cast<std::size_t>(m.length(0)))));
   side_in_body(*out);
-  if (out->body.empty() || parse_row(out->body, {}, false).index() != 0) return std::nullopt;
+  // A row that reads, a repeat of rows, or one whose first stitch reads (the rest may be
+  // the glossary's abbreviations).
+  std::string again;
+  const std::string first = out->body.substr(0, out->body.find(','));
+  const bool starts_as_row = out->body.find(',') != std::string::npos &&
+                             (first.find_first_of("*([") != std::string::npos ||
+                              std::holds_alternative<Reading>(read_stitch(normalise(first))));
+  if (out->body.empty() ||
+      (parse_row(out->body, {}, false).index() != 0 && !repeated_rows(out->body, again) && !starts_as_row))
+    return std::nullopt;
   return out;
 }
 

@@ -269,6 +269,10 @@ std::string without_repeat_before_bracket(std::string s) {
 std::string without_colons(std::string s) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s[i] == ':' && (i + 1 == s.size() || space(s[i + 1]))) s[i] = ',';
+    // "to last 5:P3"
+    if (s[i] == ':' && i > 0 && std::isdigit(static_cast<unsigned char>(s[i - 1])) && i + 1 < s.size() &&
+        std::isalpha(static_cast<unsigned char>(s[i + 1])))
+      s[i] = ',';
     // "k1, p1 - all the way across": a dash between words parts nothing.
     if (s[i] == '-' && i > 0 && space(s[i - 1]) && i + 1 < s.size() && space(s[i + 1])) s[i] = ' ';
   }

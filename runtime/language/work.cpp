@@ -69,7 +69,7 @@ std::optional<std::string> Work::work_text(const RowText& text, std::string_view
     std::vector<Op> ops;
     for (int i = 0; i < live_; ++i) {
       const bool purl = static_cast<std::size_t>(i) < purl_faced_.size() && purl_faced_[static_cast<std::size_t>(i)];
-      ops.push_back({stitch_id(purl ? "p" : "k"), yarn_});
+      ops.push_back({stitch_id(purl != text.opposite ? "p" : "k"), yarn_});
     }
     return add(std::move(ops), where);
   }

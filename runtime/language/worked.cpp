@@ -56,6 +56,22 @@ std::optional<std::string> edge_shortfall(std::span<const Worked> worked, int li
 
 }  // namespace
 
+namespace {
+
+// Where a repeat's last pass stops when the row ends "ending with" stitches the repeat
+// itself works ("*yo, sk2p, yo, k3; rep from *, ending with yo, k2"): the length of the
+// shortest start of `star` that ends with `closing`, or nothing when no run of the
+// repeat's stitches is `closing`.
+std::optional<std::size_t> last_repeat_cut(std::span<const Worked> star, std::span<const Worked> closing) {
+  if (closing.empty() || closing.size() > star.size()) return std::nullopt;
+  for (std::size_t end = closing.size(); end < star.size(); ++end)
+    if (std::equal(closing.begin(), closing.end(), star.begin() + static_cast<std::ptrdiff_t>(end - closing.size())))
+      return end;
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::string_view source, int live, int row) {
   // A row can never need more stitches than the limit of live ones; stop flattening there.
   const std::size_t limit = static_cast<std::size_t>(max_count) * 3;
@@ -112,10 +128,23 @@ std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::
   if (room % b != 0 && a == 0 && s == 0)
     return TextError{name + " repeats every " + stitches(b) + " and does not fit " + std::to_string(live) +
                      " live stitches (" + over_or_short(room % b) + "); make the count a multiple of " + std::to_string(b)};
-  if (room % b != 0)
+  if (room % b != 0) {
+    // "rep from * across row, ending with yo, k2", as vintage patterns mean it: the last
+    // repeat stops where it has worked the closing stitches, when that fits exactly.
+    if (auto cut = last_repeat_cut(star, after); cut && (live - a - consumed(std::span(star).first(*cut))) % b == 0 &&
+                                                 live - a - consumed(std::span(star).first(*cut)) >= 0) {
+      const int whole = (live - a - consumed(std::span(star).first(*cut))) / b;
+      if (before.size() + star.size() * static_cast<std::size_t>(whole + 1) > limit)
+        return TextError{name + " makes more stitches than any row can hold"};
+      std::vector<Worked> out(before);
+      for (int i = 0; i < whole; ++i) out.insert(out.end(), star.begin(), star.end());
+      out.insert(out.end(), star.begin(), star.begin() + static_cast<std::ptrdiff_t>(*cut));
+      return out;
+    }
     return TextError{name + ": the *repeat of " + stitches(b) + " does not fit the " + std::to_string(room) +
                      " stitches between the fixed ones (" + over_or_short(room % b) +
                      "); change the repeat or the fixed stitches"};
+  }
   if (before.size() + after.size() + star.size() * static_cast<std::size_t>(room / b) > limit)
     return TextError{name + " makes more stitches than any row can hold"};
   std::vector<Worked> out(before);

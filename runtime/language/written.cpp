@@ -89,8 +89,11 @@ class Parser {
     }
     if (!open.empty()) return fail(std::string("'") + open.back() + "' is never closed");
     RowText r;
-    if (as_they_appear(text_) || as_they_appear(normal_)) {
+    Appear appear = as_they_appear(text_);
+    if (appear == Appear::no) appear = as_they_appear(normal_);
+    if (appear != Appear::no) {
       r.as_they_appear = true;
+      r.opposite = appear == Appear::opposite;
       return r;
     }
     r.before = sequence();
@@ -127,6 +130,8 @@ class Parser {
           r.after = sequence();
         } else if (!repeat_clause(r)) {
           return *error_;
+        } else if (peek().kind == Kind::word) {
+          r.after = sequence();  // "*k1, p8 repeat* k3"
         }
         if (peek().kind == Kind::comma || peek().kind == Kind::semicolon) {
           next();
@@ -169,7 +174,13 @@ class Parser {
     if (words.size() >= 2 && is_repeat_word(words[0]) && words[1] == "from" && peek().kind == Kind::star) {
       next();
       words.clear();
+      const std::size_t rest = pos_;
       while (peek().kind == Kind::word) words.push_back(lower(next().text));
+      // "rep from * end B2", a comma left out: the row's closing stitches follow.
+      if (!words.empty() && (words[0] == "end" || std::holds_alternative<Reading>(read_stitch(words[0])))) {
+        pos_ = rest;
+        return true;
+      }
     } else if (!words.empty() && is_repeat_word(words[0]) && (words.size() == 1 || words[1] == "to")) {
       words.erase(words.begin());  // "*yo, p1* rep to end": the stars say where from
       if (words.empty() && peek().kind == Kind::star) next();  // "*k1, p8 repeat* k3"
@@ -216,29 +227,51 @@ class Parser {
     return std::nullopt;
   }
 
-  static bool as_they_appear(std::string_view text) {
+  enum class Appear { no, same, opposite };
+
+  // "knit the knit sts and purl the purl sts" (same) and "p over k and k over p"
+  // (opposite, as moss stitch is worked), however it is phrased; "work each stitch as it
+  // appears - knit the knits, purl the purls" says it twice.
+  static Appear as_they_appear(std::string_view text) {
     std::string t = lower(text);
-    while (!t.empty() && (t.back() == '.' || std::isspace(static_cast<unsigned char>(t.back())))) t.pop_back();
-    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.erase(t.begin());
     // "... as they appear and yo's P": a yarn over shows as a knit stitch, so purling it
     // from the wrong side is working it as it appears.
     for (std::string_view yos : {" and yo's p", " and yos p", " and yo's purl", " and purl the yo's", " and purl the yos",
                                  ", purling the yo's", ", purling the yos", " and purl yo's", " and purl yos"}) {
-      if (t.size() > yos.size() && t.compare(t.size() - yos.size(), yos.size(), yos) == 0) {
-        t.resize(t.size() - yos.size());
-        break;
+      const auto at = t.find(yos);
+      if (at != std::string::npos) t.erase(at, yos.size());
+    }
+    static constexpr std::string_view same[] = {
+        "knit the knit sts and purl the purl sts", "knit the knit stitches and purl the purl stitches",
+        "knit the knit stitches, purl the purl stitches", "knit the knit sts, purl the purl sts",
+        "knit the knits and purl the purls", "knit the knits, purl the purls", "k the k sts and p the p sts",
+        "k the knit sts and p the purl sts", "k the k and p the p", "knit over knit, purl over purl",
+        "knit over knit and purl over purl", "purl over purl, knit over knit", "purl over purl and knit over knit",
+        "k over k, p over p", "k over k and p over p", "work sts as they appear", "work the sts as they appear",
+        "work all sts as they appear", "work each st as it appears", "work each stitch as it appears",
+        "work stitches as they appear", "work as appears", "work in pattern as established", "work sts as set"};
+    static constexpr std::string_view opposite[] = {
+        "p over k and k over p", "k over p and p over k", "p over k, k over p", "k over p, p over k",
+        "purl the knit sts and knit the purl sts", "knit the purl sts and purl the knit sts",
+        "purl the knits and knit the purls", "knit the purls and purl the knits", "k the p sts and p the k sts",
+        "p the k sts and k the p sts", "purl over knit and knit over purl", "knit over purl and purl over knit"};
+    auto rest_is_empty = [](std::string_view r) {
+      return r.find_first_not_of(" \t.,;-") == std::string_view::npos;
+    };
+    for (int pass = 0; pass < 2; ++pass) {
+      std::string_view v = t;
+      while (!v.empty() && std::string_view(" \t.,;-").find(v.front()) != std::string_view::npos) v.remove_prefix(1);
+      for (std::string_view phrase : pass == 0 ? std::span<const std::string_view>(same) : std::span<const std::string_view>(opposite)) {
+        if (v.substr(0, phrase.size()) != phrase) continue;
+        std::string_view rest = v.substr(phrase.size());
+        if (rest_is_empty(rest)) return pass == 0 ? Appear::same : Appear::opposite;
+        while (!rest.empty() && std::string_view(" \t.,;-").find(rest.front()) != std::string_view::npos) rest.remove_prefix(1);
+        for (std::string_view again : pass == 0 ? std::span<const std::string_view>(same) : std::span<const std::string_view>(opposite))
+          if (rest.substr(0, again.size()) == again && rest_is_empty(rest.substr(again.size())))
+            return pass == 0 ? Appear::same : Appear::opposite;
       }
     }
-    for (const char* phrase : {"knit the knit sts and purl the purl sts", "k the k sts and p the p sts",
-                               "knit the knit stitches and purl the purl stitches", "knit the knits and purl the purls",
-                               "work sts as they appear", "work the sts as they appear", "work all sts as they appear",
-                               "k the knit sts and p the purl sts", "knit over knit, purl over purl",
-                               "knit over knit and purl over purl", "k over k, p over p", "knit the knits, purl the purls",
-                               "work in pattern as established", "work sts as set", "knit the knit stitches, purl the purl stitches",
-                               "purl over purl, knit over knit", "purl over purl and knit over knit", "k over k and p over p",
-                               "work as appears", "work sts as they appear", "k the k and p the p"})
-      if (t == phrase) return true;
-    return false;
+    return Appear::no;
   }
 
   // An open repeat ("(p2, k2) to 3 sts before end", "k to end") is the row's *repeat:
@@ -277,6 +310,12 @@ class Parser {
     while (!error_) {
       const Token& t = peek();
       if (t.kind == Kind::comma) { next(); continue; }
+      // "K to last 2 sts; K2 tog": a semicolon between stitches, not before "rep from *".
+      if (t.kind == Kind::semicolon && pos_ + 1 < tokens_.size() && tokens_[pos_ + 1].kind == Kind::word &&
+          !is_repeat_word(tokens_[pos_ + 1].text)) {
+        next();
+        continue;
+      }
       if (t.kind == Kind::open) {
         if (depth_ >= max_depth) {
           fail("groups nested more than " + std::to_string(max_depth) + " deep");
@@ -428,8 +467,13 @@ class Parser {
         }
       }
     }
-    // "keeping yarn at front, k5": where the yarn is brought, and no stitch.
-    if (words.size() == 1 && (spelled == "wyif" || spelled == "wyib")) return true;
+    // "keeping yarn at front, k5": a yarn over in some patterns, only the yarn's place in
+    // others; knitc does not guess.
+    if (words.size() == 1 && (spelled == "wyif" || spelled == "wyib")) {
+      fail("'" + written + "' on its own goes with no stitch: write it with the stitch it belongs to (sl1 " + spelled +
+           "), or yo where the yarn brought forward makes a yarn over");
+      return false;
+    }
     // "rep from *, end p3": what closes the row.
     if (words.size() > 1 && lower(words[0]) == "end") return item(words.subspan(1), seq);
     // "K last 2 sts": the stitch, that many times.

@@ -60,6 +60,8 @@ struct RowText {
   Sequence after;               // what follows "rep from * ..."
   // "knit the knit sts and purl the purl sts": every stitch worked as it shows.
   bool as_they_appear = false;
+  // With as_they_appear: "p over k and k over p", each stitch worked as the other (moss).
+  bool opposite = false;
 };
 
 // Spellings of an edge stitch ("edge st", "selvedge st", "sel st", "sel s") and of
