@@ -43,7 +43,7 @@ std::vector<std::string> short_lines(const std::string& low) {
 
 // "Cast on 26 sts", "CO 26".
 std::optional<int> stated_cast_on(const std::string& low) {
-  static const std::regex cast(R"((?:^|[^a-z])(?:cast on|co|worked over)\s*(?:loosely\s+|a total of\s+)?:?\s*(\d{1,6})(?!\d))");
+  static const std::regex cast(R"((?:^|[^a-z])(?:cast on|co|worked over|cast-on count of)\s*(?:loosely\s+|a total of\s+)?:?\s*(\d{1,6})(?!\d))");
   for (const std::string& line : short_lines(low)) {
     std::smatch m;
     if (!std::regex_search(line, m, cast)) continue;

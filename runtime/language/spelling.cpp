@@ -57,6 +57,8 @@ constexpr ProsePhrase prose[] = {
     {"yarn over needle", "yo"}, {"yarn round needle", "yo"}, {"wool round needle", "yo"}, {"wool over needle", "yo"},
     {"yarn forward", "yo"}, {"yarn fwd", "yo"}, {"wool forward", "yo"}, {"wool fwd", "yo"}, {"yarn over", "yo"},
     {"wool over", "yo"}, {"wfwd", "yo"}, {"wfd", "yo"}, {"wrn", "yo"}, {"wf", "yo"},
+    // "inc in next st": an increase that says not which (refused as "inc").
+    {"inc 1 in next st", "inc"}, {"inc in next stitch", "inc"}, {"inc in next st", "inc"}, {"inc in next", "inc"},
     // "rep from *, ending k1": what closes the row follows, as after a comma.
     {"ending with", ","}, {"ending in", ","}, {"ending", ","}, {"end with", ","},
     // How far: "p across row", "k until last 5 sts", "knit all stitches", "rep from * cont to end".
