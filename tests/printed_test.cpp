@@ -1,0 +1,126 @@
+// A printed pattern as a file of its own (`knitc build pattern.txt`), and the edge
+// stitches printed patterns open and close their rows with (issue 17).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support.hpp"
+
+namespace knitc {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+Pattern run(const std::string& header_fields, const std::string& body) {
+  return runtime::run_pattern("pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = "
+                              "\"flat\"" + header_fields + " }\n" + body,
+                              "t.lua")
+      .pattern;
+}
+
+std::vector<std::string> names(const Course& c) {
+  std::vector<std::string> out;
+  for (const Op& op : c.ops) out.emplace_back(stitch(op.stitch).name);
+  return out;
+}
+
+// Face view, left to right. A right-side row is worked from the right edge, a
+// wrong-side row from the left.
+TEST(Selvedge, EdgeStitchesAreWorkedAsThePatternSays) {
+  const std::string rows = "cast_on(5)\nrow \"edge st, k3, edge st\"\nrow \"sel st, p3, selvedge st\"\n";
+  // garter, the default: knitted at both ends of every row, so a wrong-side row's show
+  // as purls on the face (a ridge every other row).
+  const Pattern garter = run("", rows);
+  EXPECT_EQ(names(garter.courses[0]), (std::vector<std::string>{"k", "k", "k", "k", "k"}));
+  EXPECT_EQ(names(garter.courses[1]), (std::vector<std::string>{"p", "k", "k", "k", "p"}));
+  // chain: the first stitch of every row slipped, the last knitted.
+  const Pattern chain = run(", selvedge = \"chain\"", rows);
+  EXPECT_EQ(names(chain.courses[0]), (std::vector<std::string>{"k", "k", "k", "k", "sl wyib"}));
+  EXPECT_EQ(names(chain.courses[1]), (std::vector<std::string>{"sl wyif", "k", "k", "k", "p"}));
+  // knit: knitted on the right side, purled on the wrong: a knit column on the face.
+  const Pattern knit = run(", selvedge = \"knit\"", rows);
+  EXPECT_EQ(names(knit.courses[1]), (std::vector<std::string>{"k", "k", "k", "k", "k"}));
+}
+
+TEST(Selvedge, AnEdgeStitchInTheMiddleOfARowIsRefused) {
+  try {
+    run("", "cast_on(5)\nrow \"k2, edge st, k2\"\n");
+    FAIL() << "no error";
+  } catch (const runtime::PatternError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "t.lua:3: row 1 \"k2, edge st, k2\": an edge stitch belongs at the start or the end of a row, not in its middle");
+  }
+  try {
+    run(", selvedge = \"slipped\"", "cast_on(5)\n");
+    FAIL() << "no error";
+  } catch (const runtime::PatternError& e) {
+    EXPECT_EQ(std::string(e.what()), "t.lua:1: selvedge is \"slipped\"; use \"garter\", \"chain\" or \"knit\"");
+  }
+}
+
+TEST(Selvedge, TheChainSelvedgeSlipsOneEdgeStitchARowAndCompiles) {
+  // The slipped edge loop is held over two rows, drawn by the slip stitch's geometry.
+  const std::string rows = "cast_on(6)\nrows(6, \"edge st, k4, edge st\")\n";
+  const Pattern chain = run(", selvedge = \"chain\"", rows);
+  CompileOptions o;
+  o.view = View::centreline;
+  EXPECT_FALSE(compile(chain, o).pieces.empty());
+  int slipped = 0;
+  for (const Course& c : chain.courses)
+    for (const Op& op : c.ops) slipped += stitch(op.stitch).family == StitchFamily::slip;
+  EXPECT_EQ(slipped, 6);  // one a row, at alternate edges
+}
+
+TEST(PrintedFile, BuildsAPrintedPatternWithNoLuaAroundIt) {
+  const fs::path dir = test::scratch_dir("printed");
+  test::write_text(dir / "seed.txt",
+                   "Seed stitch (multiple of 2 sts plus 1)\n\n1st row.\u2014K 1, * p 1, k 1; rep. from * to end.\n"
+                   "2nd row.\u2014As 1st row.\n");
+  const auto check = test::run_knitc("check " + quoted(dir / "seed.txt"));
+  EXPECT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_NE(check.err.find("seed.txt: 2 rows, 25 stitches cast on, 25 live at the end"), std::string::npos) << check.err;
+  // --cast-on wins over the stated multiple; the .glb is written.
+  const auto build = test::run_knitc("build " + quoted(dir / "seed.txt") + " --cast-on 11 --gauge 18x24 --weight worsted -o " +
+                                     quoted(fs::path(KNITC_GLB_DIR) / "printed_seed.glb") + " -q");
+  EXPECT_EQ(build.exit_code, 0) << build.err;
+  EXPECT_TRUE(fs::exists(fs::path(KNITC_GLB_DIR) / "printed_seed.glb"));
+  const auto chart = test::run_knitc("chart --cast-on 11 " + quoted(dir / "seed.txt"));
+  EXPECT_EQ(chart.out.rfind("# seed: 2 rows on 11 stitches, flat", 0), 0u) << chart.out;
+  // Rounds, when its rows are rounds.
+  test::write_text(dir / "rib.txt", "Rnd 1: *k2, p2; rep from *.\nRnd 2: k the knit sts and p the purl sts.\n");
+  const auto round = test::run_knitc("chart " + quoted(dir / "rib.txt"));
+  EXPECT_NE(round.out.find("in the round"), std::string::npos) << round.out;
+  fs::remove_all(dir);
+}
+
+TEST(PrintedFile, ProblemsSayWhereAndMisuseExitsTwo) {
+  const fs::path dir = test::scratch_dir("printed_bad");
+  test::write_text(dir / "bad.txt", "Row 1: k2, p2.\nRow 2: k3tgo.\n");
+  const auto bad = test::run_knitc("check --cast-on 8 " + quoted(dir / "bad.txt"));
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find((dir / "bad.txt").string() + ":2: row 2 \"k3tgo\": unknown stitch 'k3tgo'; did you mean"),
+            std::string::npos)
+      << bad.err;
+  // A printed pattern's options are for printed patterns only.
+  const auto lua = test::run_knitc("check --cast-on 8 patterns/jersey.lua");
+  EXPECT_EQ(lua.exit_code, 2);
+  EXPECT_NE(lua.err.find("--cast-on is for a printed pattern"), std::string::npos) << lua.err;
+  EXPECT_EQ(test::run_knitc("check --gauge 22 " + quoted(dir / "bad.txt")).exit_code, 2);
+  EXPECT_EQ(test::run_knitc("check --gauge 0x30 " + quoted(dir / "bad.txt")).exit_code, 2);
+  EXPECT_EQ(test::run_knitc("check --weight cobweb " + quoted(dir / "bad.txt")).exit_code, 2);
+  EXPECT_EQ(test::run_knitc("check --knitting sideways " + quoted(dir / "bad.txt")).exit_code, 2);
+  EXPECT_EQ(test::run_knitc("check --cast-on 0 " + quoted(dir / "bad.txt")).exit_code, 2);
+  // Nothing to read: a clear error, at line 1.
+  test::write_text(dir / "empty.txt", "Just a note about my scarf.\n");
+  const auto empty = test::run_knitc("check " + quoted(dir / "empty.txt"));
+  EXPECT_EQ(empty.exit_code, 1);
+  EXPECT_NE(empty.err.find("empty.txt:1: "), std::string::npos) << empty.err;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace knitc
