@@ -167,7 +167,7 @@ const BadScript catalogue[] = {
      "t.lua:2: yarn 'Z' was never declared; declare it in pattern{ yarns = ... } (declared: A, B)"},
     {"ws_cable_flat",
      "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2 } }, knitting = \"flat\" }\ncast_on(8)\nrow \"k\"\nrow \"C4F, k4\"\n",
-     "t.lua:4: row 2 \"C4F, k4\" is a wrong-side row: C4F has no wrong-side form; work it on a right-side row"},
+     "t.lua:4: row 2 \"C4F, k4\" is a wrong-side row: C4F worked from the wrong side crosses stitches that show as purls on the face, which knitc cannot draw yet; work it on a right-side row, or as a cross over a purl background (2/2 RPC)"},
     {"chart_unknown_symbol",
      "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nchart [[\n  | | . .\n  | | Q .\n]]\n",
      "t.lua:5: unknown chart symbol 'Q'; did you mean . (p)? The legend has . / O U V \\ ^ k p v x | and stitch names such as C4F"},

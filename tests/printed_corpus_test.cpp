@@ -91,7 +91,7 @@ const std::map<std::string, std::string> refused = {
     {"us_framed_cross_stitch_cable", "unknown stitch 'seed 4'"},
     {"us_knittingfool_table_1263", ":1: the knitspeak text has no rows"},  // a table, and a cluster in words
     // Crosses worked on wrong-side rows, and crosses of ribbed stitches.
-    {"vintage_spool98_cable_stitch", "is a wrong-side row: C6B has no wrong-side form"},
+    {"vintage_spool98_cable_stitch", "is a wrong-side row: C6B worked from the wrong side crosses stitches that show as purls"},
     {"us_reversible_cable_scarf_craftzine", "unknown stitch 'slip 8 sts onto cable needle'"},
     // Ambiguous, as knitc refuses to guess.
     {"uk_knitforvictory_ladder_scarf", "'inc' could mean kfb, m1 or yo"},

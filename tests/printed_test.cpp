@@ -75,6 +75,44 @@ TEST(Selvedge, TheChainSelvedgeSlipsOneEdgeStitchARowAndCompiles) {
   EXPECT_EQ(slipped, 6);  // one a row, at alternate edges
 }
 
+// Reversible and Celtic patterns cross on wrong-side rows: worked from the back as its
+// right-side words say, a purl-background cross shows its held stitches at the other end
+// and every stitch's other face.
+TEST(WrongSideCrosses, APurlBackgroundCrossShowsAsItsMirrorFromTheFace) {
+  const Pattern p = run("", "cast_on(8)\nrow \"p2, k4, p2\"\nrow \"k2, T3B, p1, k2\"\nrow \"p2, k4, p2\"\n"
+                            "row \"k2, p1, T3F, k2\"\n");
+  // Row 2: "sl 1 to cn, hold in back, k2, p1 from cn" from the back: the held purl shows
+  // as a knit on top, moving right over two knits that show as purls.
+  EXPECT_EQ(names(p.courses[1]), (std::vector<std::string>{"p", "p", "1/2 RPC", "k", "p", "p"}));
+  EXPECT_EQ(names(p.courses[3]), (std::vector<std::string>{"p", "p", "k", "1/2 LPC", "p", "p"}));
+  // Equal groups keep their name (2/2 RPC is T4B).
+  const Pattern q = run("", "cast_on(8)\nrow \"p2, k4, p2\"\nrow \"k2, 2/2 RPC, k2\"\n");
+  EXPECT_EQ(names(q.courses[1]), (std::vector<std::string>{"p", "p", "T4B", "p", "p"}));
+  // The face's wrong-side working is the cross again: the mapping is its own inverse.
+  for (std::size_t i = 0; i < stitch_table().size(); ++i) {
+    const auto id = static_cast<StitchId>(i);
+    if (stitch(id).family != StitchFamily::cable) continue;
+    const auto face = wrong_side_face(id);
+    if (!face) continue;
+    SCOPED_TRACE(std::string(stitch(id).name));
+    EXPECT_EQ(wrong_side_face(*face), std::optional<StitchId>(id));
+    EXPECT_EQ(stitch(*face).consumes, stitch(id).consumes);
+    EXPECT_TRUE(stitch(*face).cable.purl_background);
+  }
+}
+
+TEST(WrongSideCrosses, AKnitCrossFromTheBackIsRefusedWithTheReason) {
+  try {
+    run("", "cast_on(8)\nrow \"k8\"\nrow \"p2, C4F, p2\"\n");
+    FAIL() << "no error";
+  } catch (const runtime::PatternError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.lua:4: row 2 \"p2, C4F, p2\" is a wrong-side row: C4F worked from the wrong side "
+                                         "crosses stitches that show as purls on the face"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(PrintedFile, BuildsAPrintedPatternWithNoLuaAroundIt) {
   const fs::path dir = test::scratch_dir("printed");
   test::write_text(dir / "seed.txt",

@@ -139,6 +139,22 @@ std::vector<StitchDef> build_table() {
     for (int n = 1; n <= 3; ++n)
       for (int c = 1; c <= 3; ++c) add(n, c, n, k);
   }
+  // A cross worked from the wrong side, as its right-side words say ("sl 1 to cn, hold in
+  // back, k2, p1 from cn"), seen from the face. The held stitches are then the leftmost,
+  // and they end at the right; held in back (away from the knitter) they lie on top.
+  // Every stitch shows the other face: a purl-background cross keeps its knit stitches
+  // on top, so 2/1 RPC worked so is 1/2 RPC; a cross of knit stitches shows purls
+  // crossing, which the table has not (no wrong-side form).
+  for (StitchDef& d : all) {
+    if (d.family != F::cable || !d.cable.purl_background || d.cable.middle > 0) continue;
+    const int others = d.consumes - d.cable.held;
+    StitchDef face = d;
+    // The groups change places: the struct's held group (a right cross's under stitches,
+    // a left cross's top ones) is the one that was not held.
+    face.cable.held = others;
+    const auto same = std::find_if(all.begin(), all.end(), [&](const StitchDef& e) { return same_cross(e, face); });
+    if (same != all.end()) d.wrong_side_face = same->name;
+  }
   return all;
 }
 
