@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "language/chart.hpp"
+#include "language/glossary.hpp"
 #include "language/work.hpp"
 #include "language/written.hpp"
 #include "runtime.hpp"
@@ -23,6 +24,7 @@ struct Script {
   bool declared = false;
   int declared_line = 0;
   language::Legend legend = language::default_legend();
+  std::vector<language::GlossaryEntry> glossary;  // stitch(...): the pattern's own abbreviations
   std::vector<std::string> warnings;
   std::size_t warnings_dropped = 0;   // warnings past max_warnings, counted only
   const char* running_verb = nullptr;  // the verb running now: verbs do not nest

@@ -57,7 +57,9 @@ void work_written(lua_State* L, const language::RowText& text, const std::string
 
 language::RowText parse_written(lua_State* L, const std::string& text, const SourceLocation* at = nullptr) {
   charge(L, text.size() / 4 + 1);
-  auto parsed = language::parse_row(text, script_of(L).yarn_ids);
+  const Script& s = script_of(L);
+  if (!s.glossary.empty()) charge(L, text.size() * s.glossary.size() / 16 + 1);
+  auto parsed = language::parse_row(s.glossary.empty() ? text : language::with_glossary(text, s.glossary), s.yarn_ids);
   if (auto* e = std::get_if<language::TextError>(&parsed)) {
     const std::string m = "row " + std::to_string(next_row(script_of(L))) + " " + language::quote_row(text) + ": " + e->message;
     at ? fail_at(L, *at, m) : fail(L, m);
@@ -322,6 +324,35 @@ int knitspeak_verb(lua_State* L) {
   return 0;
 }
 
+// stitch("C4Bp", "sl 2 to cn, hold in back, k2, p2 from cn"): an abbreviation of the
+// pattern's own, for the rows, charts and knitspeak blocks that follow.
+int stitch_verb(lua_State* L) {
+  need_pattern(L, "stitch");
+  Script& s = script_of(L);
+  if (lua_type(L, 1) != LUA_TSTRING || lua_type(L, 2) != LUA_TSTRING)
+    fail(L, "stitch takes the abbreviation and its working as two strings, e.g. stitch(\"C4Bp\", \"sl 2 to cn, hold in "
+            "back, k2, p2 from cn\")");
+  const std::string name = text_of(L, 1), working = text_of(L, 2);
+  if (name.size() > 20 || working.size() > 2000) fail(L, "stitch's abbreviation is at most 20 bytes and its working 2000");
+  auto entry = language::read_glossary_line(name + ": " + working, caller_line(L));
+  if (!entry || entry->abbreviation != name)
+    fail(L, "'" + printable(name, 40) + "' is not an abbreviation knitc can declare: give letters, digits, '/', '-' or "
+            "spaces, at most three words");
+  if (entry->known) fail(L, "'" + name + "' is a stitch knitc knows already; declare a name of the pattern's own");
+  if (!entry->means)
+    fail(L, "knitc cannot read the working of '" + name + "' (" + language::quote_row(working) +
+                "): give a stitch it knows (knitc reference lists them), a few of them (\"k2, p2\") or a cross in words "
+                "(\"sl 2 to cn, hold in front, k2, k2 from cn\")");
+  for (const auto& e : s.glossary)
+    if (language::lower(e.abbreviation) == language::lower(name)) fail(L, "'" + name + "' is declared already at line " + std::to_string(e.line));
+  if (s.glossary.size() >= 200) fail(L, "a pattern declares at most 200 stitches");
+  // A chart may draw it too, when it stands for one stitch.
+  if (const auto one = language::find_stitch(*entry->means); one && name.find(' ') == std::string::npos)
+    s.legend.set(name, {*one, -1, false});
+  s.glossary.push_back(std::move(*entry));
+  return 0;
+}
+
 int yarn_verb(lua_State* L) {
   need_pattern(L, "yarn");
   if (lua_type(L, 1) != LUA_TSTRING) fail(L, "yarn takes a declared yarn's name, e.g. yarn \"B\"");
@@ -389,6 +420,12 @@ constexpr Verb verbs[] = {
      "worked in number order; a first row printed (WS) is worked from the wrong side. Lines that are not rows "
      "(headings, notes) are skipped with a warning; errors name the text's own line.",
      "knitspeak [[\n  Row 1 (RS): *K2, p2; rep from *.\n  Row 2: Knit the knit sts and purl the purl sts.\n]]"},
+    {"stitch", stitch_verb, "stitch(abbreviation, working)",
+     "Declares an abbreviation of the pattern's own, as its glossary prints it, for the rows, charts and knitspeak "
+     "blocks that follow: the working is a stitch knitc knows, a few of them, or a cross in words (`sl 2 to cn, hold "
+     "in back, k2, p2 from cn`). A working knitc cannot read is refused with the reason. A knitspeak block's own "
+     "glossary lines (`C4Bp: ...`) are read the same way.",
+     "stitch(\"C4Bp\", \"sl 2 to cn, hold in back, k2, p2 from cn\")"},
     {"legend", legend_verb, "legend { [symbol] = stitch | { stitch, yarn = id }, ... }",
      "Adds or changes chart symbols for the charts that follow.", "legend { [\"#\"] = { \"k\", yarn = \"B\" } }"},
     {"yarn", yarn_verb, "yarn(id)", "Changes to another declared yarn for the rows that follow: stripes.", "yarn \"B\""},

@@ -113,6 +113,45 @@ TEST(WrongSideCrosses, AKnitCrossFromTheBackIsRefusedWithTheReason) {
   }
 }
 
+// A pattern's own abbreviations, declared once for rows, charts and knitspeak alike.
+TEST(Glossary, ADeclaredStitchIsReadInRowsChartsAndKnitspeak) {
+  const Pattern p = run("", "cast_on(10)\nstitch(\"C4Bp\", \"sl 2 sts to cn, hold in back, k2, p2 from cn\")\n"
+                            "stitch(\"B2\", \"knit 2 stitches at each end\")\n"
+                            "row \"B2, C4Bp, k2, B2\"\nrow \"p10\"\nchart [[\n  | C4Bp | | | | |\n]]\n"
+                            "knitspeak [[\nRow 4: B2, p2, k2, p2, B2.\n]]\n");
+  ASSERT_EQ(p.courses.size(), 4u);
+  EXPECT_EQ(names(p.courses[0]), (std::vector<std::string>{"k", "k", "k", "k", "T4B", "k", "k"}));
+  EXPECT_EQ(names(p.courses[2]), (std::vector<std::string>{"k", "T4B", "k", "k", "k", "k", "k"}));
+  EXPECT_EQ(names(p.courses[3]).front(), "p");  // B2 worked on a wrong-side row: k2, purls on the face
+  // A knitspeak block's own glossary line does the same.
+  const Pattern q = run("", "cast_on(8)\nknitspeak [[\nC6Lp: slip 3 sts to cn and hold in front, p3, k3 from cn.\n"
+                            "Row 1: p1, C6Lp, p1.\nRow 2: k1, p3, k3, k1.\n]]\n");
+  EXPECT_EQ(names(q.courses[0]), (std::vector<std::string>{"p", "3/3 LPC", "p"}));
+}
+
+TEST(Glossary, AWorkingKnitcCannotReadIsRefusedWithTheReason) {
+  auto error = [](const std::string& body) {
+    try {
+      run("", "cast_on(8)\n" + body);
+    } catch (const runtime::PatternError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error("stitch(\"MB\", \"make a bobble\")\n"),
+            "t.lua:3: knitc cannot read the working of 'MB' (\"make a bobble\"): give a stitch it knows (knitc reference "
+            "lists them), a few of them (\"k2, p2\") or a cross in words (\"sl 2 to cn, hold in front, k2, k2 from cn\")");
+  EXPECT_EQ(error("stitch(\"ssk\", \"k2tog\")\n"),
+            "t.lua:3: 'ssk' is a stitch knitc knows already; declare a name of the pattern's own");
+  EXPECT_EQ(error("stitch(\"Q1\", \"k1 tbl\")\nstitch(\"q1\", \"p1\")\n"), "t.lua:4: 'q1' is declared already at line 3");
+  // A knitspeak glossary line knitc cannot read: the row that uses it is refused, its
+  // definition quoted.
+  EXPECT_EQ(error("knitspeak [[\nQ1 = insert the needle under the loose strand and knit the next st.\nRow 1: k3, Q1, k4.\n]]\n"),
+            "t.lua:5: row 1 of the text uses 'Q1', which line 4 defines as \"insert the needle under the loose strand and "
+            "knit the next s...\"; knitc cannot read that working yet: write the row with stitches it knows (knitc reference "
+            "lists them)");
+}
+
 TEST(PrintedFile, BuildsAPrintedPatternWithNoLuaAroundIt) {
   const fs::path dir = test::scratch_dir("printed");
   test::write_text(dir / "seed.txt",
