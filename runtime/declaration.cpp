@@ -260,6 +260,14 @@ int pattern_verb(lua_State* L) {
   lua_pop(L, 1);
   for (const Yarn& y : p.yarns) s.yarn_ids.push_back(y.id);
   s.work = language::Work(std::move(p), {max_stitches, max_loops});
+  const std::string first_row = string_field(L, 1, "pattern{}", "first_row").value_or(std::string(field("pattern", "first_row").fallback));
+  if (first_row != "right side" && first_row != "wrong side")
+    fail(L, "first_row is \"" + printable(first_row, 100) + "\"; use \"right side\" or \"wrong side\"");
+  if (first_row == "wrong side") {
+    if (s.work.pattern().knitting != Knitting::flat)
+      fail(L, "first_row is \"wrong side\" but the pattern is knitted in the round, where every row is worked from the right side");
+    s.work.start_on_wrong_side();
+  }
   s.work.set_selvedge(selvedge == "chain" ? language::Selvedge::chain
                       : selvedge == "knit" ? language::Selvedge::knit
                                            : language::Selvedge::garter);

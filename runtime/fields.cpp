@@ -39,6 +39,8 @@ constexpr Field fields[] = {
     table("pattern", "yarns", "the yarns, each by a short name: { A = { ... }, B = { ... } }"),
     choice("pattern", "knitting", "round|flat", "round",
            "round: every row is worked from the right side; flat: even rows are wrong-side rows"),
+    choice("pattern", "first_row", "right side|wrong side", "right side",
+           "flat: the side row 1 is worked from, as a pattern printed \"Row 1 (WS)\" says; in the round always the right side"),
     choice("pattern", "selvedge", "garter|chain|knit", "garter",
            "how an edge stitch (edge st, selvedge st, sel st) is worked: garter, knitted at both ends of every row; "
            "chain, the first slipped knitwise and the last knitted; knit, knitted on right-side rows and purled on "

@@ -32,7 +32,7 @@ const BadScript catalogue[] = {
      "t.lua:1: pattern{} needs a gauge, e.g. gauge = { stitches = 22, rows = 30 } (per 10 cm)"},
     {"unknown_pattern_field",
      "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { diameter = 1 } }, colour = 1, bogus = 2 }\n",
-     "t.lua:1: unknown field 'bogus' in pattern{}; known fields: name, gauge, yarns, knitting, selvedge, seed"},
+     "t.lua:1: unknown field 'bogus' in pattern{}; known fields: name, gauge, yarns, knitting, first_row, selvedge, seed"},
     {"negative_gauge",
      "pattern { gauge = { stitches = -3, rows = 30 }, yarns = { A = { diameter = 1 } } }\n",
      "t.lua:1: gauge.stitches is -3 per 10 cm; it must be more than 0 per 10 cm and at most 200 per 10 cm"},

@@ -28,11 +28,6 @@ std::vector<int> counts(const Pattern& p) {
 
 std::vector<int> repeated(int n, int value) { return std::vector<int>(static_cast<std::size_t>(n), value); }
 
-std::vector<int> cycle(std::initializer_list<int> pattern, int times) {
-  std::vector<int> out;
-  for (int i = 0; i < times; ++i) out.insert(out.end(), pattern);
-  return out;
-}
 
 struct Read {
   int cast_on;

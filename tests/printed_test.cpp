@@ -113,6 +113,35 @@ TEST(WrongSideCrosses, AKnitCrossFromTheBackIsRefusedWithTheReason) {
   }
 }
 
+// A pattern whose row 1 is printed "(WS)" says so in every notation.
+TEST(WrongSideFirst, EveryNotationCanBeginOnAWrongSideRow) {
+  const std::string rows = "cast_on(4)\nrow \"k1, p3\"\nrow \"k3, p1\"\n";
+  const Pattern field = run(", first_row = \"wrong side\"", rows);
+  const Pattern marked = run("", "cast_on(4)\nrow \"(WS) k1, p3\"\nrow \"(RS) k3, p1\"\n");
+  const Pattern printed = run("", "cast_on(4)\nknitspeak [[\nRow 1 (WS): k1, p3.\nRow 2: k3, p1.\n]]\n");
+  const Pattern charted = run(", first_row = \"wrong side\"", "cast_on(4)\nchart [[\n  | | | .\n  | | | .\n]]\n");
+  for (const Pattern* p : {&field, &marked, &printed}) {
+    ASSERT_EQ(p->courses.size(), 2u);
+    EXPECT_EQ(p->courses[0].side, Side::wrong);
+    EXPECT_EQ(names(p->courses[0]), (std::vector<std::string>{"p", "k", "k", "k"}));  // k1 first, at the left
+    EXPECT_EQ(names(p->courses[1]), (std::vector<std::string>{"p", "k", "k", "k"}));
+  }
+  EXPECT_EQ(charted.courses[0].side, Side::wrong);
+  EXPECT_EQ(names(charted.courses[0]), (std::vector<std::string>{"k", "k", "k", "p"}));  // drawn as the face looks
+  auto error = [](const std::string& fields, const std::string& body) {
+    try {
+      run(fields, body);
+    } catch (const runtime::PatternError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error("", "cast_on(4)\nrow \"k4\"\nrow \"(RS) k4\"\n"),
+            "t.lua:4: row 2 \"(RS) k4\" is printed as a right-side row but is a wrong-side row of the fabric; check the "
+            "rows before it");
+  EXPECT_EQ(error(", first_row = \"back\"", ""), "t.lua:1: first_row is \"back\"; use \"right side\" or \"wrong side\"");
+}
+
 // A pattern's own abbreviations, declared once for rows, charts and knitspeak alike.
 TEST(Glossary, ADeclaredStitchIsReadInRowsChartsAndKnitspeak) {
   const Pattern p = run("", "cast_on(10)\nstitch(\"C4Bp\", \"sl 2 sts to cn, hold in back, k2, p2 from cn\")\n"

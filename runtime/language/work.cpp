@@ -64,6 +64,21 @@ std::optional<std::string> Work::no_live_stitches() const {
 
 std::optional<std::string> Work::work_text(const RowText& text, std::string_view source, const SourceLocation& where) {
   if (auto e = no_live_stitches()) return e;
+  // "(WS) k2, p2": a first row printed so turns the work first (undone if the row fails);
+  // later, it is checked.
+  if (text.side && pattern_.knitting == Knitting::flat) {
+    const bool turn = pattern_.courses.empty() && *text.side == Side::wrong && !wrong_side_first_;
+    if (turn) wrong_side_first_ = true;
+    if (*text.side != side_of(next_row()))
+      return "row " + std::to_string(next_row()) + " " + quote_row(source) + " is printed as a " +
+             (*text.side == Side::right ? "right" : "wrong") + "-side row but is a " +
+             (*text.side == Side::right ? "wrong" : "right") + "-side row of the fabric; check the rows before it";
+    RowText rest = text;
+    rest.side.reset();
+    auto e = work_text(rest, source, where);
+    if (e && turn) wrong_side_first_ = false;
+    return e;
+  }
   const int row = next_row();
   if (text.as_they_appear) {  // face view directly: each stitch keeps the look it has
     std::vector<Op> ops;

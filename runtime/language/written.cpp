@@ -74,7 +74,21 @@ std::string stitch_hint(const std::string& written) {
 class Parser {
  public:
   Parser(std::string_view text, std::span<const std::string> yarns, bool hints = true)
-      : text_(text), normal_(normalise(text)), tokens_(tokenize(normal_)), yarns_(yarns), hints_(hints) {}
+      : text_(text), normal_(normalise(text)), side_(leading_side(normal_)), tokens_(tokenize(normal_)), yarns_(yarns),
+        hints_(hints) {}
+
+  // "(WS) k2, p2", "RS: k2, p2": a side printed before the stitches, taken off.
+  static std::optional<Side> leading_side(std::string& text) {
+    const std::string low = lower(text);
+    for (const auto& [mark, side] : {std::pair{"(rs)", Side::right}, {"(ws)", Side::wrong}, {"rs:", Side::right},
+                                     {"ws:", Side::wrong}, {"(right side)", Side::right}, {"(wrong side)", Side::wrong}}) {
+      const std::size_t at = low.find_first_not_of(" \t");
+      if (at == std::string::npos || low.compare(at, std::string_view(mark).size(), mark) != 0) continue;
+      text.erase(0, at + std::string_view(mark).size());
+      return side;
+    }
+    return std::nullopt;
+  }
 
   std::variant<RowText, TextError> row() {
     // Brackets first: an unclosed group would otherwise read as a strange stitch.
@@ -89,7 +103,8 @@ class Parser {
     }
     if (!open.empty()) return fail(std::string("'") + open.back() + "' is never closed");
     RowText r;
-    Appear appear = as_they_appear(text_);
+    r.side = side_;
+    Appear appear = side_ ? Appear::no : as_they_appear(text_);
     if (appear == Appear::no) appear = as_they_appear(normal_);
     if (appear != Appear::no) {
       r.as_they_appear = true;
@@ -551,6 +566,7 @@ class Parser {
 
   std::string_view text_;
   std::string normal_;  // the text as normalise() spells it: what the tokens view
+  std::optional<Side> side_;  // a side printed before the stitches
   std::vector<Token> tokens_;
   std::span<const std::string> yarns_;
   bool hints_ = true;

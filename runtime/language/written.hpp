@@ -62,6 +62,8 @@ struct RowText {
   bool as_they_appear = false;
   // With as_they_appear: "p over k and k over p", each stitch worked as the other (moss).
   bool opposite = false;
+  // "(WS) k2, p2": the side the row says it is worked from, printed before its stitches.
+  std::optional<Side> side;
 };
 
 // Spellings of an edge stitch ("edge st", "selvedge st", "sel st", "sel s") and of
