@@ -33,13 +33,17 @@ void add_printed_options(CLI::App* cmd, PrintedArgs& a) {
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--gauge", a.gauge, "a printed pattern's gauge, STITCHESxROWS per 10 cm (default 22x30)");
   cmd->add_option("--weight", a.options.weight, "a printed pattern's yarn weight (default dk; knitc reference lists them)");
+  cmd->add_option("--selvedge", a.options.selvedge,
+                  "a printed pattern's edge stitches: garter, chain or knit (default: chain if it says to slip the first "
+                  "stitch of every row, else garter)")
+      ->check(CLI::IsMember({"garter", "chain", "knit"}));
   cmd->add_option("--knitting", a.knitting, "a printed pattern's knitting, flat or round (default: round if its rows are rounds)")
       ->check(CLI::IsMember({"flat", "round"}));
 }
 
 std::optional<std::string> settle_printed_options(const CLI::App* cmd, const std::string& path, PrintedArgs& a) {
   if (!knitc::runtime::is_printed_pattern(path)) {
-    for (const char* name : {"--cast-on", "--gauge", "--weight", "--knitting"})
+    for (const char* name : {"--cast-on", "--gauge", "--weight", "--knitting", "--selvedge"})
       if (cmd->get_option(name)->count() != 0)
         return std::string("knitc: ") + name + " is for a printed pattern (a file that is not .lua); a script declares its own";
     return std::nullopt;

@@ -17,7 +17,7 @@ struct PrintedArgs {
   std::string knitting;  // "flat", "round" or "" (from the text)
 };
 
-// --cast-on, --gauge, --weight, --knitting on `cmd`.
+// --cast-on, --gauge, --weight, --knitting, --selvedge on `cmd`.
 void add_printed_options(CLI::App* cmd, PrintedArgs& a);
 
 // Settles the options for the pattern at `path`: nothing when they are good, else the

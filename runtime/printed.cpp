@@ -74,15 +74,24 @@ bool in_rounds(const std::string& low) {
   return false;
 }
 
+// "Slip the first stitch of every row", "sl 1st st of each row": a chain selvedge.
+bool says_chain_selvedge(const std::string& low) {
+  static const std::regex slip(R"((?:slip|sl)\s+(?:the\s+)?(?:first|1st)\s+(?:st|stitch)\w*\s+(?:of\s+)?(?:every|each|all)\s+rows?)");
+  for (const std::string& line : short_lines(low))
+    if (std::regex_search(line, slip)) return true;
+  return false;
+}
+
 // The script that works `text` as a printed pattern, all on its first line, so the text's
 // line n is the file's line n. The text goes inside a long bracket no line of it can close.
-std::string driver(const std::string& name, const PrintedOptions& o, Knitting knitting, int cast_on, const std::string& text) {
+std::string driver(const std::string& name, const PrintedOptions& o, Knitting knitting, const std::string& selvedge,
+                   int cast_on, const std::string& text) {
   std::string level;
   while (text.find("]" + level + "]") != std::string::npos) level += '=';
   const std::string knitted = knitting == Knitting::flat ? "flat" : "round";
   return "pattern { name = \"" + name + "\", gauge = { stitches = " + show(o.stitches_per_10cm) +
          ", rows = " + show(o.rows_per_10cm) + " }, yarns = { A = { weight = \"" + o.weight + "\", color = \"" + o.color +
-         "\" } }, knitting = \"" + knitted + "\" } cast_on(" + std::to_string(cast_on) + ") knitspeak [" + level + "[" + text +
+         "\" } }, knitting = \"" + knitted + "\", selvedge = \"" + selvedge + "\" } cast_on(" + std::to_string(cast_on) + ") knitspeak [" + level + "[" + text +
          "]" + level + "]";
 }
 
@@ -136,7 +145,8 @@ RunResult run_printed_file(const std::string& path, const PrintedOptions& printe
   if (name.empty()) name = "printed";
   const std::string low = lowered(text);
   const Knitting knitting = printed.knitting.value_or(in_rounds(low) ? Knitting::round : Knitting::flat);
-  auto run = [&](int cast_on) { return run_pattern(driver(name, printed, knitting, cast_on, text), path, options); };
+  const std::string selvedge = printed.selvedge.value_or(says_chain_selvedge(low) ? "chain" : "garter");
+  auto run = [&](int cast_on) { return run_pattern(driver(name, printed, knitting, selvedge, cast_on, text), path, options); };
 
   if (printed.cast_on) return run(*printed.cast_on);
   if (const auto n = stated_cast_on(low)) return run(*n);

@@ -73,6 +73,9 @@ struct PrintedOptions {
   std::string weight = "dk";         // the yarn's weight (the weights of docs/language.md)
   std::string color = "#d9c8a9";
   std::optional<Knitting> knitting;  // else round when its rows are rounds ("Rnd 1:"), else flat
+  // "garter", "chain" or "knit" (docs/stitches.md); else chain when the text says to slip
+  // the first stitch of every row, else garter.
+  std::optional<std::string> selvedge;
 };
 
 // Whether knitc reads `path` as a printed pattern rather than a script: any file but .lua.

@@ -196,6 +196,15 @@ TEST(PrintedFile, BuildsAPrintedPatternWithNoLuaAroundIt) {
   EXPECT_TRUE(fs::exists(fs::path(KNITC_GLB_DIR) / "printed_seed.glb"));
   const auto chart = test::run_knitc("chart --cast-on 11 " + quoted(dir / "seed.txt"));
   EXPECT_EQ(chart.out.rfind("# seed: 2 rows on 11 stitches, flat", 0), 0u) << chart.out;
+  // A chain selvedge where the text says to slip the first stitch of every row.
+  test::write_text(dir / "edged.txt", "Slip the first stitch of every row.\nRow 1: edge st, k4, edge st.\n"
+                                      "Row 2: edge st, p4, edge st.\n");
+  runtime::PrintedOptions six;
+  six.cast_on = 6;
+  const Pattern edged = runtime::run_printed_file((dir / "edged.txt").string(), six).pattern;
+  EXPECT_EQ(names(edged.courses[0]).back(), "sl wyib");
+  six.selvedge = "garter";
+  EXPECT_EQ(names(runtime::run_printed_file((dir / "edged.txt").string(), six).pattern.courses[0]).back(), "k");
   // Rounds, when its rows are rounds.
   test::write_text(dir / "rib.txt", "Rnd 1: *k2, p2; rep from *.\nRnd 2: k the knit sts and p the purl sts.\n");
   const auto round = test::run_knitc("chart " + quoted(dir / "rib.txt"));
