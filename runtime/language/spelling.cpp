@@ -88,8 +88,10 @@ bool phrase_at(std::string_view low, std::size_t at, std::string_view phrase) {
 }
 
 std::string replace_phrases(std::string s) {
+  // One lower-case copy, made again only after a phrase was replaced: a long row must not
+  // cost a copy per phrase.
+  std::string low = lower(s);
   for (const auto& [phrase, with] : prose) {
-    std::string low = lower(s);
     if (low.find(phrase) == std::string::npos) continue;
     std::string out;
     for (std::size_t i = 0; i < s.size();) {
@@ -101,6 +103,7 @@ std::string replace_phrases(std::string s) {
       }
     }
     s = std::move(out);
+    low = lower(s);
   }
   return s;
 }

@@ -66,8 +66,12 @@ std::string join(std::span<const std::string_view> words) {
 // "; did you mean k2tog?" when a known name is close, else where to look.
 std::string stitch_hint(const std::string& written) {
   const std::string nearest = nearest_stitch_name(written);
-  const int distance = edit_distance(written, nearest);
-  if (distance <= std::max<int>(2, static_cast<int>(written.size()) / 3)) return "; did you mean " + nearest + "?";
+  // As nearest_stitch_name does, measure the start only: a megabyte of text must not cost
+  // a megabyte times a name.
+  const std::string_view start = std::string_view(written).substr(0, 48);
+  const int distance = edit_distance(start, nearest);
+  if (written.size() <= 48 && distance <= std::max<int>(2, static_cast<int>(start.size()) / 3))
+    return "; did you mean " + nearest + "?";
   return "; knitc does not know it yet (knitc reference lists the stitches it knows)";
 }
 
