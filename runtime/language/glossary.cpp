@@ -106,8 +106,19 @@ std::optional<std::string> cross_in_words(std::string_view definition) {
   return cross_named(m);
 }
 
-std::optional<GlossaryEntry> read_glossary_line(std::string_view line, int number) {
-  const std::string_view t = trim(line);
+namespace {
+
+// `nested`: the definition after a heading ("Notes: B2 = ..."), read once, no deeper.
+std::optional<GlossaryEntry> read_line(std::string_view line, int number, bool nested);
+
+}  // namespace
+
+std::optional<GlossaryEntry> read_glossary_line(std::string_view line, int number) { return read_line(line, number, false); }
+
+namespace {
+
+std::optional<GlossaryEntry> read_line(std::string_view line, int number, bool nested) {
+  const std::string_view t = trim(line.substr(0, longest_definition + longest_abbreviation + 8));
   std::size_t sep = std::string_view::npos, width = 0;
   for (std::string_view mark : {":", "=", " - ", "- "}) {
     const std::size_t at = t.find(mark);
@@ -130,11 +141,11 @@ std::optional<GlossaryEntry> read_glossary_line(std::string_view line, int numbe
   }
   // "Notes: B2 = Knit 2 stitches on each end": a heading before the definition; and
   // "Stitch Explanation: 4-st RC, Slip 2 sts to cn ...", the abbreviation before a comma.
-  if (definition.find_first_of(":=") != std::string_view::npos) {
-    if (auto inner = read_glossary_line(definition, number); inner && !inner->known) return inner;
-  } else if (const auto comma = definition.find(", "); comma != std::string_view::npos && comma <= longest_abbreviation) {
+  if (!nested && definition.find_first_of(":=") != std::string_view::npos) {
+    if (auto inner = read_line(definition, number, true); inner && !inner->known) return inner;
+  } else if (const auto comma = definition.find(", "); !nested && comma != std::string_view::npos && comma <= longest_abbreviation) {
     const std::string as_defined = std::string(definition.substr(0, comma)) + ": " + std::string(definition.substr(comma + 2));
-    if (auto inner = read_glossary_line(as_defined, number); inner && !inner->known && inner->means) return inner;
+    if (auto inner = read_line(as_defined, number, true); inner && !inner->known && inner->means) return inner;
   }
   const auto reading = read_stitch(normalise(e.definition));
   if (const auto* r = std::get_if<Reading>(&reading); r && r->count == 1) e.means = std::string(stitch(r->stitch).name);
@@ -147,6 +158,8 @@ std::optional<GlossaryEntry> read_glossary_line(std::string_view line, int numbe
   }
   return e;
 }
+
+}  // namespace
 
 std::string with_glossary(std::string_view text, std::span<const GlossaryEntry> glossary) {
   std::vector<const GlossaryEntry*> read;

@@ -496,9 +496,13 @@ class Parser {
     // "rep from *, end p3": what closes the row.
     if (words.size() > 1 && lower(words[0]) == "end") return item(words.subspan(1), seq);
     // "K last 2 sts": the stitch, that many times.
-    if (words.size() == 4 && lower(words[1]) == "last" && whole(words[2]) && stitch_words(words[3])) {
+    if (words.size() == 4 && lower(words[1]) == "last" && whole(words[2]) && stitch_words(words[3]) &&
+        std::holds_alternative<Reading>(read_stitch(words[0]))) {
+      const std::size_t before = seq.size();
       const std::string_view one[] = {words[0]};
-      return item(std::span<const std::string_view>(one), seq) && (seq.back().count = *whole(words[2]), true);
+      if (!item(std::span<const std::string_view>(one), seq)) return false;
+      if (seq.size() == before + 1 && !seq.back().is_group) seq.back().count = std::max(1, *whole(words[2]));
+      return true;
     }
     // The stitch as printed: exact, squeezed ("K 2 tog"), or with a count run in ("sl1pw").
     const auto reading = read_stitch(words);
