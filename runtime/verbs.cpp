@@ -333,7 +333,9 @@ int stitch_verb(lua_State* L) {
     fail(L, "stitch takes the abbreviation and its working as two strings, e.g. stitch(\"C4Bp\", \"sl 2 to cn, hold in "
             "back, k2, p2 from cn\")");
   const std::string name = text_of(L, 1), working = text_of(L, 2);
-  if (name.size() > 20 || working.size() > 2000) fail(L, "stitch's abbreviation is at most 20 bytes and its working 2000");
+  if (name.size() > language::longest_abbreviation || working.size() > language::longest_definition)
+    fail(L, "stitch's abbreviation is at most " + std::to_string(language::longest_abbreviation) + " bytes and its working " +
+                std::to_string(language::longest_definition));
   auto entry = language::read_glossary_line(name + ": " + working, caller_line(L));
   if (!entry || entry->abbreviation != name)
     fail(L, "'" + printable(name, 40) + "' is not an abbreviation knitc can declare: give letters, digits, '/', '-' or "
@@ -345,7 +347,8 @@ int stitch_verb(lua_State* L) {
                 "(\"sl 2 to cn, hold in front, k2, k2 from cn\")");
   for (const auto& e : s.glossary)
     if (language::lower(e.abbreviation) == language::lower(name)) fail(L, "'" + name + "' is declared already at line " + std::to_string(e.line));
-  if (s.glossary.size() >= 200) fail(L, "a pattern declares at most 200 stitches");
+  if (s.glossary.size() >= language::max_glossary)
+    fail(L, "a pattern declares at most " + std::to_string(language::max_glossary) + " stitches");
   // A chart may draw it too, when it stands for one stitch.
   if (const auto one = language::find_stitch(*entry->means); one && name.find(' ') == std::string::npos)
     s.legend.set(name, {*one, -1, false});

@@ -91,11 +91,7 @@ Pattern run(const std::string& body, const std::string& knitting = "flat") {
       .pattern;
 }
 
-std::vector<std::string> names(const Course& c) {
-  std::vector<std::string> out;
-  for (const Op& op : c.ops) out.emplace_back(stitch(op.stitch).name);
-  return out;
-}
+using test::names;
 
 TEST(Written, OpenRepeatsAsKnittersPrintThem) {
   // Face view, left to right; a right-side row is worked from the right, so written

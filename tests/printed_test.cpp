@@ -22,11 +22,7 @@ Pattern run(const std::string& header_fields, const std::string& body) {
       .pattern;
 }
 
-std::vector<std::string> names(const Course& c) {
-  std::vector<std::string> out;
-  for (const Op& op : c.ops) out.emplace_back(stitch(op.stitch).name);
-  return out;
-}
+using test::names;
 
 // Face view, left to right. A right-side row is worked from the right edge, a
 // wrong-side row from the left.

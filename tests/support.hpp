@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <sys/wait.h>
 
@@ -15,6 +16,13 @@
 #include "runtime.hpp"
 
 namespace knitc::test {
+
+// A course's stitches by name, in face view, left to right.
+inline std::vector<std::string> names(const Course& c) {
+  std::vector<std::string> out;
+  for (const Op& op : c.ops) out.emplace_back(stitch(op.stitch).name);
+  return out;
+}
 
 struct CommandResult {
   int exit_code = -1;

@@ -13,8 +13,6 @@ namespace knitc::language {
 
 namespace {
 
-constexpr std::size_t longest_abbreviation = 20;  // bytes: "sel s", "C4Bpk", "Front Cross"
-constexpr std::size_t longest_definition = 2000;  // bytes read of a definition
 constexpr std::size_t longest_cross_words = 300;  // bytes of a cross described in brackets
 
 std::string_view trim(std::string_view s) {

@@ -5,12 +5,19 @@
 // uses it is refused with the definition quoted and a hint to declare it.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 
 namespace knitc::language {
+
+// A glossary's bounds: an abbreviation's bytes ("sel s", "C4Bpk", "Front Cross"), the
+// bytes of a definition read, and the abbreviations one pattern or block may define.
+inline constexpr std::size_t longest_abbreviation = 20;
+inline constexpr std::size_t longest_definition = 2000;
+inline constexpr std::size_t max_glossary = 200;
 
 struct GlossaryEntry {
   std::string abbreviation;          // as printed, "C4Bp"

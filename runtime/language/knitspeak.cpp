@@ -16,7 +16,6 @@ namespace {
 
 constexpr std::size_t max_block_rows = 100'000;             // rows a block expands to
 constexpr std::size_t max_block_text_bytes = 16u << 20;     // bytes of those rows' texts
-constexpr std::size_t max_glossary = 200;                   // abbreviations a text may define
 
 using namespace knitspeak_lines;
 

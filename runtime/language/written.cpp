@@ -176,9 +176,10 @@ class Parser {
     return *error_;
   }
 
+  // "st", "sts", "stitch", "stitches" (and the typed "stitchs"), any case.
   static bool stitch_words(std::string_view w) {
     const std::string l = lower(w);
-    return l == "st" || l == "sts" || l == "stitch" || l == "stitches";
+    return l == "st" || l == "sts" || l == "stitch" || l == "stitches" || l == "stitchs";
   }
 
   static bool is_repeat_word(std::string_view w) {
@@ -224,9 +225,6 @@ class Parser {
   // "to last [N] st(s)", "to N st(s) before end [of ...]"; nothing if the words say
   // something else.
   static std::optional<int> to_clause(std::span<const std::string> w) {
-    auto is_st = [](const std::string& x) {
-      return x == "st" || x == "sts" || x == "stitch" || x == "stitches" || x == "stitchs";
-    };
     // "to the last 4 sts"
     std::vector<std::string> kept;
     for (const std::string& x : w)
@@ -238,10 +236,10 @@ class Parser {
     };
     if (w.size() < 2 || w[0] != "to") return std::nullopt;
     if (w[1] == "end" && end_of(w.subspan(2))) return 0;
-    if (w[1] == "last" && w.size() == 4 && whole(w[2]) && is_st(w[3])) return whole(w[2]);
-    if (w[1] == "last" && w.size() == 3 && is_st(w[2])) return 1;
+    if (w[1] == "last" && w.size() == 4 && whole(w[2]) && stitch_words(w[3])) return whole(w[2]);
+    if (w[1] == "last" && w.size() == 3 && stitch_words(w[2])) return 1;
     if (w[1] == "last" && w.size() == 3 && whole(w[2])) return whole(w[2]);  // "to last 6: p4"
-    if (w.size() >= 5 && whole(w[1]) && is_st(w[2]) && w[3] == "before" && w[4] == "end" && end_of(w.subspan(5)))
+    if (w.size() >= 5 && whole(w[1]) && stitch_words(w[2]) && w[3] == "before" && w[4] == "end" && end_of(w.subspan(5)))
       return whole(w[1]);
     return std::nullopt;
   }
@@ -277,19 +275,22 @@ class Parser {
     auto rest_is_empty = [](std::string_view r) {
       return r.find_first_not_of(" \t.,;-") == std::string_view::npos;
     };
-    for (int pass = 0; pass < 2; ++pass) {
+    // The row's words are a phrase of `list`, or that phrase twice in other words.
+    auto says = [&](std::span<const std::string_view> list) {
       std::string_view v = t;
       while (!v.empty() && std::string_view(" \t.,;-").find(v.front()) != std::string_view::npos) v.remove_prefix(1);
-      for (std::string_view phrase : pass == 0 ? std::span<const std::string_view>(same) : std::span<const std::string_view>(opposite)) {
+      for (std::string_view phrase : list) {
         if (v.substr(0, phrase.size()) != phrase) continue;
         std::string_view rest = v.substr(phrase.size());
-        if (rest_is_empty(rest)) return pass == 0 ? Appear::same : Appear::opposite;
+        if (rest_is_empty(rest)) return true;
         while (!rest.empty() && std::string_view(" \t.,;-").find(rest.front()) != std::string_view::npos) rest.remove_prefix(1);
-        for (std::string_view again : pass == 0 ? std::span<const std::string_view>(same) : std::span<const std::string_view>(opposite))
-          if (rest.substr(0, again.size()) == again && rest_is_empty(rest.substr(again.size())))
-            return pass == 0 ? Appear::same : Appear::opposite;
+        for (std::string_view again : list)
+          if (rest.substr(0, again.size()) == again && rest_is_empty(rest.substr(again.size()))) return true;
       }
-    }
+      return false;
+    };
+    if (says(same)) return Appear::same;
+    if (says(opposite)) return Appear::opposite;
     return Appear::no;
   }
 
