@@ -264,12 +264,13 @@ std::optional<std::vector<int>> repeated_rows(std::string_view body, std::string
   return std::nullopt;
 }
 
-// A label with no separator, "Row 1 (RS)   P2, k3" or "Row 15 P2, k6": the numbers, a
+// A label with no separator, "Row 1 (RS)   P2, k3" or "Row 15 P2, k6": the numbers (each
+// run of digits bounded by a separator, so a long number cannot backtrack), a
 // side perhaps, then words that read as a row (else it is no label: "Rows 1-4 form the
 // pattern" is a note).
 std::optional<Label> loose_label(std::string_view line, std::size_t after) {
   static const std::regex head(
-      R"(^\s*((?:\d+\s*(?:,|&|and|to|-)?\s*)+)\s*(\((?:rs|ws|right side|wrong side)\)|\[(?:rs|ws)\]|rs|ws)?\s*(\((?:and )?(?:every|all)[^)]*\)|(?:and\s+)?(?:all|every)\s+(?:other\s+|following\s+)?(?:ws|rs|wrong side|right side)\s+rows?)?\s*[:.]*\s+)");
+      R"(^\s*(\d+(?:\s*(?:,|&|-)\s*(?:and\s+)?\d+|\s+(?:and|to)\s+\d+)*)\s*(\((?:rs|ws|right side|wrong side)\)|\[(?:rs|ws)\]|rs|ws)?\s*(\((?:and )?(?:every|all)[^)]*\)|(?:and\s+)?(?:all|every)\s+(?:other\s+|following\s+)?(?:ws|rs|wrong side|right side)\s+rows?)?\s*[:.]*\s+)");
   const std::string rest = lower(line.substr(after, std::min<std::size_t>(line.size() - after, 200)));
   std::smatch m;
   if (!std::regex_search(rest, m, head)) return std::nullopt;
