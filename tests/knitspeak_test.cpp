@@ -151,6 +151,20 @@ TEST(Stitches, IncreasesWorkEveryNewLoopThroughTheOldOne) {
   for (int i = g.course_first[1]; i < g.course_first[2]; ++i) EXPECT_EQ(g.loops[static_cast<std::size_t>(i)].parents.size(), 1u);
 }
 
+// A nupp as Stitch Maps counts it: five loops out of one stitch, gathered by the next
+// row's p5tog (worked from the wrong side, it shows as k5tog on the face).
+TEST(Stitches, NuppMakesFiveLoopsOfOneAndTheNextRowGathersThem) {
+  const Pattern p = run("cast_on(3)\nrow \"k1, nupp, k1\"\nrow \"p1, p5tog, p1\"\n", "flat");
+  const auto g = knit_graph::build(p);
+  ASSERT_EQ(g.needle[1], 7);
+  ASSERT_EQ(g.needle[2], 3);
+  for (int i = g.course_first[1] + 1; i < g.course_first[1] + 6; ++i)
+    EXPECT_EQ(g.loops[static_cast<std::size_t>(i)].parents, std::vector<int>{1});
+  const auto& gathered = g.loops[static_cast<std::size_t>(g.course_first[2] + 1)];
+  EXPECT_EQ(stitch(gathered.stitch).name, "k5tog");
+  EXPECT_EQ(gathered.parents.size(), 5u);
+}
+
 using language::find_stitch;
 
 // No spelling is shadowed by another stitch's: each finds its own stitch.

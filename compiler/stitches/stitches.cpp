@@ -95,6 +95,11 @@ constexpr auto more = std::to_array<StitchDef>({
     plain("ctr dbl inc", 1, 3, F::increase, Lean::centre, ""),
     plain("k wrapping yarn twice", 1, 1, F::knit, Lean::none, "p wrapping yarn twice"),
     plain("p wrapping yarn twice", 1, 1, F::purl, Lean::none, "k wrapping yarn twice"),
+    // Estonian lace's nupp, as Stitch Maps counts it: five loops out of one stitch, worked
+    // loosely, gathered by a five-together on the next row.
+    plain("nupp", 1, 5, F::increase, Lean::centre, ""),
+    plain("k5tog", 5, 1, F::decrease, Lean::right, "p5tog"),
+    plain("p5tog", 5, 1, F::decrease, Lean::right, "k5tog"),
 });
 
 // Crosses in the Stitch Maps notation n/m XX and n/c/n XX, generated: n stitches cross

@@ -110,6 +110,12 @@ constexpr Entry entries[] = {
       "knit wrapping the yarn twice; the extra wrap is dropped on the next row: an elongated stitch"}},
     {"p wrapping yarn twice", {"p wyt|p elongated|p double wrap", "p_wyt", "p_wyt", true,
       "purl wrapping the yarn twice; the extra wrap is dropped on the next row: an elongated stitch"}},
+    {"nupp", {"", "nupp", "nupp", false,
+      "nupp: (k1, yo, k1, yo, k1) worked loosely into one stitch, five stitches out of one; gather them with p5tog or k5tog on the next row"}},
+    {"k5tog", {"k5 tog", "k5tog", "k5tog", false,
+      "knit five together: four stitches less (a nupp gathered from the right side)"}},
+    {"p5tog", {"p5 tog", "p5tog", "p5tog", false,
+      "purl five together: four stitches less (a nupp gathered on the wrong side); on a wrong-side row it shows as k5tog"}},
 };
 
 // A generated cross: its notation is its name; its symbol the name without the space.
