@@ -96,7 +96,8 @@ constexpr auto more = std::to_array<StitchDef>({
     plain("k wrapping yarn twice", 1, 1, F::knit, Lean::none, "p wrapping yarn twice"),
     plain("p wrapping yarn twice", 1, 1, F::purl, Lean::none, "k wrapping yarn twice"),
     // Estonian lace's nupp, as Stitch Maps counts it: five loops out of one stitch, worked
-    // loosely, gathered by a five-together on the next row.
+    // loosely, gathered by a five-together on the next row. Printed (k1, yo, k1, yo, k1);
+    // as an increase every loop, the yarn overs' too, is pulled through the old stitch.
     plain("nupp", 1, 5, F::increase, Lean::centre, ""),
     plain("k5tog", 5, 1, F::decrease, Lean::right, "p5tog"),
     plain("p5tog", 5, 1, F::decrease, Lean::right, "k5tog"),

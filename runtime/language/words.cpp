@@ -111,7 +111,7 @@ constexpr Entry entries[] = {
     {"p wrapping yarn twice", {"p wyt|p elongated|p double wrap", "p_wyt", "p_wyt", true,
       "purl wrapping the yarn twice; the extra wrap is dropped on the next row: an elongated stitch"}},
     {"nupp", {"", "nupp", "nupp", false,
-      "nupp: (k1, yo, k1, yo, k1) worked loosely into one stitch, five stitches out of one; gather them with p5tog or k5tog on the next row"}},
+      "nupp: five loops worked loosely into one stitch (printed (k1, yo, k1, yo, k1); knitc pulls all five through it), five stitches out of one; gather them with p5tog or k5tog on the next row"}},
     {"k5tog", {"k5 tog", "k5tog", "k5tog", false,
       "knit five together: four stitches less (a nupp gathered from the right side)"}},
     {"p5tog", {"p5 tog", "p5tog", "p5tog", false,
