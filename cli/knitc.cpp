@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 1 a problem in the pattern (file:line: ...), 2 bad command-line
 // use, 3 a file that could not be read or written (disk full, permissions, not a
 // regular file), 4 out of memory or a fault of knitc's own.
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -216,6 +217,18 @@ int check(const Args& args) {
   auto loaded = load(args);
   if (const int* code = std::get_if<int>(&loaded)) return *code;
   const auto& p = std::get<knitc::Pattern>(loaded);
+  try {
+    // What only the knit graph sees: a dropped wale that cannot unravel. Built only then,
+    // and not past the size the compiler would refuse anyway: check stays fast.
+    const bool drops = std::any_of(p.courses.begin(), p.courses.end(), [](const knitc::Course& c) {
+      return std::any_of(c.ops.begin(), c.ops.end(),
+                         [](const knitc::Op& op) { return knitc::stitch(op.stitch).family == knitc::StitchFamily::drop; });
+    });
+    if (drops && knitc::loops_of(p) <= static_cast<long long>(knitc::max_loops)) knitc::knit(p);
+  } catch (const knitc::CompileError& e) {
+    report(e.what());
+    return exit_pattern;
+  }
   if (!args.quiet) {
     fmt::print(stderr, "{}: {} rows, {} stitches cast on, {} live at the end{}\n", args.pattern, p.courses.size(),
                p.cast_on, knitc::produced(p.courses.back()), p.bound_off ? " (bound off)" : "");

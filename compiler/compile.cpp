@@ -69,11 +69,24 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
     too_many_vertices(pattern, static_cast<double>(loops) * rings_per_loop * per_ring, "at least ");
   layout::Layout layout;
   try {
-    layout = layout::lay_out(pattern);
-  } catch (const std::invalid_argument& e) {  // the runtime checks counts first: a caller's bug
+    layout = layout::lay_out(pattern, knit(pattern));
+  } catch (const std::invalid_argument& e) {
     throw CompileError(where_it_passes(pattern, 1.0) + e.what());
   }
   return compile(pattern, std::move(layout), options);
+}
+
+knit_graph::Graph knit(const Pattern& pattern) {
+  try {
+    return knit_graph::build(pattern);
+  } catch (const knit_graph::RowError& e) {
+    // The runtime checks counts as the script runs; what the graph alone sees (a wale
+    // that cannot unravel) is reported at the row that asks for it.
+    const auto at = static_cast<std::size_t>(e.course);
+    if (at < 1 || at > pattern.courses.size()) throw CompileError(where_it_passes(pattern, 1.0) + e.what());
+    const SourceLocation& where = pattern.courses[at - 1].where;
+    throw CompileError(where.file + ":" + std::to_string(std::max(where.line, 1)) + ": " + e.what());
+  }
 }
 
 Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptions& options) {

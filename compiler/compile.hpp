@@ -82,6 +82,10 @@ class CompileError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The pattern's knit graph. Throws CompileError at the row it cannot work (a dropped
+// stitch whose wale cannot unravel): `knitc check` asks this too.
+knit_graph::Graph knit(const Pattern& pattern);
+
 // Compiles a validated pattern (the runtime validates) into geometry. Throws
 // CompileError for a fabric past the size limits.
 Fabric compile(const Pattern& pattern, const CompileOptions& options);

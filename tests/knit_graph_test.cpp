@@ -131,6 +131,48 @@ TEST(KnitGraph, AStripeChangeStartsTheNewYarnOnTheOldLoops) {
   EXPECT_EQ(at(g, 1, 2).order, 3);
 }
 
+// A drop lets the stitch off and its wale unravels down to the yarn over it grew from,
+// that too: every loop of the run a rung, with no parents and no children left.
+TEST(KnitGraph, ADroppedStitchUnravelsItsWaleToTheYarnOver) {
+  const auto g = knit_graph::build(run("cast_on(4)\nrow \"k2, yo, k2\"\nrows(3, \"k\")\nrow \"k2, drop, k2\"\nrow \"k\"\n"));
+  EXPECT_EQ(g.needle, (std::vector<int>{4, 5, 5, 5, 5, 4, 4}));
+  for (int c = 1; c <= 4; ++c) {
+    EXPECT_TRUE(at(g, c, 2).unravelled) << "course " << c;
+    EXPECT_TRUE(at(g, c, 2).parents.empty()) << "course " << c;
+    EXPECT_FALSE(at(g, c, 1).unravelled);
+    EXPECT_FALSE(at(g, c, 3).unravelled);
+  }
+  EXPECT_EQ(g.course_first[6] - g.course_first[5], 4);  // the drop makes no loop
+  for (int w = 0; w < 4; ++w) {  // nothing above is pulled through the ladder
+    for (int p : at(g, 5, w).parents) EXPECT_FALSE(g.loops[static_cast<std::size_t>(p)].unravelled);
+    for (int p : at(g, 6, w).parents) EXPECT_FALSE(g.loops[static_cast<std::size_t>(p)].unravelled);
+  }
+  EXPECT_FALSE(at(g, 0, 2).unravelled);  // the run stops at the yarn over
+}
+
+// A wale that runs down through a decrease, an increase or a tuck cannot unravel as one:
+// the row that drops it is refused, naming both rows.
+TEST(KnitGraph, ADropThatCannotUnravelIsRefusedAtItsRow) {
+  struct Case {
+    const char* rows;
+    const char* says;
+  } cases[] = {
+      {"row \"k2tog, k1\"\nrow \"drop, k1\"\n", "row 2 drops a stitch whose wale would unravel down through 2 stitches worked together at row 1"},
+      {"row \"k1, kfb, k1\"\nrow \"k1, drop, k2\"\n", "row 2 drops a stitch whose wale would unravel into an increase worked at row 1"},
+      {"row \"k1, tuck, k1\"\nrow \"k1, drop, k1\"\n", "row 2 drops a stitch holding a tuck"},
+  };
+  for (const Case& c : cases) {
+    const Pattern p = run(std::string("cast_on(3)\n") + c.rows);
+    try {
+      knit_graph::build(p);
+      ADD_FAILURE() << "no error for " << c.rows;
+    } catch (const knit_graph::RowError& e) {
+      EXPECT_EQ(e.course, 2);
+      EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(KnitGraph, ACourseThatDoesNotFitTheNeedleIsRefused) {
   Pattern p = run("cast_on(3)\nrow \"k\"\n");
   p.courses[0].ops.pop_back();

@@ -170,7 +170,7 @@ const BadScript catalogue[] = {
      "t.lua:4: row 2 \"C4F, k4\" is a wrong-side row: C4F worked from the wrong side crosses stitches that show as purls on the face, which knitc cannot draw yet; work it on a right-side row, or as a cross over a purl background (2/2 RPC)"},
     {"chart_unknown_symbol",
      "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nchart [[\n  | | . .\n  | | Q .\n]]\n",
-     "t.lua:5: unknown chart symbol 'Q'; did you mean . (p)? The legend has . / O U V \\ ^ k p v x | and stitch names such as C4F"},
+     "t.lua:5: unknown chart symbol 'Q'; did you mean . (p)? The legend has . / D O U V \\ ^ k p v x | and stitch names such as C4F"},
     {"chart_width",
      "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(10)\nchart [[\n  | | . .\n]]\n",
      "t.lua:4: chart row 1 (row 1) is 4 stitches wide and does not repeat evenly across 10 live stitches (2 left over); make the live count a multiple of 4"},
@@ -312,6 +312,26 @@ TEST(CatalogueCli, ExitsOneAndWritesNothing) {
     EXPECT_EQ(r.exit_code, 1) << script.name;
     EXPECT_NE(r.err.find(":"), std::string::npos) << script.name;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.glb")) << script.name;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// What only the knit graph sees, a dropped stitch whose wale cannot unravel as one, is
+// refused at the row that drops it by check and by build alike.
+TEST(CatalogueCli, ADropThatCannotUnravelIsRefusedByCheckAndBuild) {
+  const auto dir = test::scratch_dir("catalogue_drop");
+  test::write_text(dir / "t.lua",
+                   "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\n"
+                   "cast_on(3)\nrow \"k2tog, k1\"\nrow \"p1, drop\"\n");
+  const std::string message =
+      "t.lua:4: row 2 drops a stitch whose wale would unravel down through 2 stitches worked together at row 1; a "
+      "dropped stitch unravels to a yarn over: drop one made by a yo above that row";
+  const std::string script = "'" + (dir / "t.lua").string() + "'";
+  for (const std::string& command : {"check " + script, "build " + script + " -o '" + (dir / "out.glb").string() + "'"}) {
+    const auto r = test::run_knitc(command);
+    EXPECT_EQ(r.exit_code, 1) << command;
+    EXPECT_NE(r.err.find(message), std::string::npos) << command << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.glb")) << command;
   }
   std::filesystem::remove_all(dir);
 }

@@ -126,6 +126,41 @@ TEST(YarnPathsOfFabrics, StrandedWorkFloatsTheOtherColourBehind) {
   for (auto p = first + 1; p != second; ++p) EXPECT_LT(p->z, -0.5);
 }
 
+// Quilting: a float slipped wyif on row 1 is caught by the knit under it on row 3, which
+// lifts its middle two courses up, over the head of the loop the catching stitch is
+// pulled through and under the catching loop's legs.
+TEST(YarnPathsOfFabrics, ACaughtFloatIsLiftedIntoTheLoopThatCatchesIt) {
+  const Pattern p = run("cast_on(5)\nrow \"k1, sl3 wyif, k1\"\nrow \"p\"\nrow \"k2, k under float, k2\"\nrow \"p\"\n");
+  const auto g = knit_graph::build(p);
+  ASSERT_EQ(g.floats.size(), 1u);
+  const int catcher = g.floats[0].caught_by;
+  ASSERT_GE(catcher, 0);
+  EXPECT_EQ(g.loops[static_cast<std::size_t>(catcher)].course, 3);
+  EXPECT_EQ(g.loops[static_cast<std::size_t>(catcher)].slot, 2);
+  const auto l = layout::lay_out(p, g);
+  ASSERT_EQ(l.float_lifts.size(), 1u);
+  ASSERT_EQ(l.float_lifts[0].size(), 3u);
+  const glm::dvec3 lift = l.float_lifts[0][1];
+  const auto& catching = l.loops[static_cast<std::size_t>(catcher)];
+  const auto& parent = at(l, 2, 2);
+  EXPECT_NEAR(lift.x, parent.data_points[8].x, 1e-9);
+  EXPECT_GT(lift.y, 2.5 * l.course_spacing);  // from course 1 up into course 3's foot
+  EXPECT_LT(lift.y, parent.data_points[8].y);
+  EXPECT_GT(lift.z, parent.data_points[8].z);  // over the parent's head
+  EXPECT_LT(lift.z, catching.data_points[2].z);  // under the catching loop's legs
+  // The yarn goes through the lift point between its loops at positions 0 and 4 of row 1.
+  const auto pieces = yarn_paths::trace(l, LoopModel::smooth);
+  ASSERT_EQ(pieces.size(), 1u);
+  const auto& points = pieces[0].data_points;
+  EXPECT_TRUE(std::any_of(points.begin(), points.end(), [&](const glm::dvec3& q) { return glm::distance(q, lift) < 1e-9; }));
+}
+
+// With nothing slipped below it, a stitch worked under the loose strand is refused.
+TEST(YarnPathsOfFabrics, AStitchUnderNoFloatIsRefused) {
+  const Pattern p = run("cast_on(3)\nrow \"k\"\nrow \"p\"\nrow \"k1, k under float, k1\"\n");
+  EXPECT_THROW(knit_graph::build(p), knit_graph::RowError);
+}
+
 TEST(YarnPathsOfFabrics, InTheRoundTheYarnSpiralsRoundATube) {
   const int n = 10;
   const Pattern p = run("cast_on(" + std::to_string(n) + ")\nrows(4, \"k\")\n", "round");

@@ -1,5 +1,6 @@
 #include "knit_graph/knit_graph.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -16,11 +17,62 @@ int cable_source(const StitchDef& s, int j) {
   return j < h ? n - h + j : j - h;
 }
 
+// A drop: the live loop is let off and its wale unravels, each loop down the wale losing
+// the one pulled through it, to the yarn over (or cast-on or make-one) it grew from,
+// which comes undone too. Every loop of the run becomes a rung. A wale unravels as one
+// only through loops of one parent and one child: a decrease, an increase, or a tuck
+// held with it stops it, and the row is refused rather than drawn half undone.
+void unravel(Graph& g, std::vector<int>& children, const std::vector<int>& live, int course) {
+  auto row = [](int c) { return c == 0 ? std::string("the cast-on") : "row " + std::to_string(c); };
+  if (live.size() != 1)
+    throw RowError(course, row(course) + " drops a stitch holding a tuck (" + std::to_string(live.size()) +
+                               " loops on one needle); knit the tuck off before dropping the stitch");
+  for (int l = live.front();;) {
+    Loop& loop = g.loops[static_cast<std::size_t>(l)];
+    if (loop.parents.size() > 1)
+      throw RowError(course, row(course) + " drops a stitch whose wale would unravel down through " +
+                                 std::to_string(loop.parents.size()) + " stitches worked together at " + row(loop.course) +
+                                 "; a dropped stitch unravels to a yarn over: drop one made by a yo above that row");
+    if (!loop.parents.empty() && children[static_cast<std::size_t>(loop.parents.front())] > 1)
+      throw RowError(course, row(course) + " drops a stitch whose wale would unravel into an increase worked at " +
+                                 row(loop.course) +
+                                 " (one stitch worked several times); drop a stitch made by a yo above that row");
+    loop.unravelled = true;
+    if (loop.parents.empty()) return;
+    const int parent = loop.parents.front();
+    loop.parents.clear();
+    children[static_cast<std::size_t>(parent)] = 0;
+    l = parent;
+  }
+}
+
+// A stitch worked under the floats: it catches every loose float over its stitch on the
+// side it is pulled out to (in front for a knit), and the others stay loose. Returns them.
+std::vector<int> catch_floats(Graph& g, std::vector<int> loose, int loop, bool in_front, int course) {
+  std::vector<int> left;
+  int caught = 0;
+  for (int f : loose) {
+    Float& fl = g.floats[static_cast<std::size_t>(f)];
+    if (fl.in_front != in_front) {
+      left.push_back(f);
+      continue;
+    }
+    fl.caught_by = loop;
+    ++caught;
+  }
+  if (caught == 0)
+    throw RowError(course, "row " + std::to_string(course) + " works a stitch under the loose strand, but no float lies over it on the " +
+                               (in_front ? "face" : "back") + " within " + std::to_string(float_reach - 1) +
+                               " rows below; slip the stitches under it with the yarn on that side on an earlier row (sl wyif on a "
+                               "right-side row for the face)");
+  return left;
+}
+
 // Worked into the stitch below (brioche's k1 below): the needle goes through the loops
 // the live ones were pulled through, and the live loops drop off onto the new loop,
 // held by it as a tuck is. So the live loops lose their parents to the new loop and
 // become held loops beside them; a cast-on loop has none to give and is simply worked.
-std::vector<int> drop_into_stitch_below(Graph& g, std::vector<int> live) {
+std::vector<int> drop_into_stitch_below(Graph& g, std::vector<int>& children, std::vector<int> live) {
   std::vector<int> parents;
   for (int l : live) {
     Loop& dropped = g.loops[static_cast<std::size_t>(l)];
@@ -29,6 +81,7 @@ std::vector<int> drop_into_stitch_below(Graph& g, std::vector<int> live) {
       continue;
     }
     parents.insert(parents.end(), dropped.parents.begin(), dropped.parents.end());
+    for (int p : dropped.parents) --children[static_cast<std::size_t>(p)];  // the new loop counts them again
     dropped.parents.clear();
     dropped.held = true;
     parents.push_back(l);
@@ -41,6 +94,7 @@ std::vector<int> drop_into_stitch_below(Graph& g, std::vector<int> live) {
 Graph build(const Pattern& pattern) {
   Graph g;
   std::vector<std::vector<int>> live;
+  std::vector<int> children;  // per loop: the loops pulled through it
   g.course_first.push_back(0);
   const StitchId knit = stitch_id("k");
   for (int i = 0; i < pattern.cast_on; ++i) {
@@ -51,8 +105,11 @@ Graph build(const Pattern& pattern) {
     l.stitch = knit;
     l.yarn = pattern.cast_on_yarn;
     g.loops.push_back(l);
+    children.push_back(0);
     live.push_back({i});
   }
+  // Per live stitch: the floats lying over it not yet caught, from the last float_reach rows.
+  std::vector<std::vector<int>> loose(live.size());
   g.needle.push_back(pattern.cast_on);
   std::vector<int> yarn_order(pattern.yarns.size(), 0);
   for (int y = 0; y < static_cast<int>(pattern.yarns.size()); ++y) {
@@ -71,9 +128,21 @@ Graph build(const Pattern& pattern) {
     g.course_first.push_back(static_cast<int>(g.loops.size()));
     const int needed = consumed(course);
     if (needed != static_cast<int>(live.size()))
-      throw std::invalid_argument("row " + std::to_string(number) + " works " + std::to_string(needed) + " stitches but " +
+      throw RowError(number, "row " + std::to_string(number) + " works " + std::to_string(needed) + " stitches but " +
                                   std::to_string(live.size()) + " are live");
-    std::vector<std::vector<int>> next;
+    std::vector<std::vector<int>> next, next_loose;
+    // The loose floats of live stitches [from, from + n), those float_reach rows down let go.
+    auto loose_over = [&](std::size_t from, int n) {
+      std::vector<int> out;
+      for (int k = 0; k < n; ++k)
+        for (int f : loose[from + static_cast<std::size_t>(k)]) {
+          const Float& fl = g.floats[static_cast<std::size_t>(f)];
+          if (fl.caught_by < 0 && fl.course > number - float_reach && std::find(out.begin(), out.end(), f) == out.end())
+            out.push_back(f);
+        }
+      std::sort(out.begin(), out.end());
+      return out;
+    };
     const std::size_t first_loop = g.loops.size();
     std::size_t at = 0;  // next live stitch, face order
     int position = 0;
@@ -88,37 +157,56 @@ Graph build(const Pattern& pattern) {
         l.yarn = op.yarn;
         l.parents = std::move(parents);
         l.held = held;
+        for (int p : l.parents) ++children[static_cast<std::size_t>(p)];
         g.loops.push_back(std::move(l));
+        children.push_back(0);
         return static_cast<int>(g.loops.size()) - 1;
       };
       switch (s.family) {
-        case StitchFamily::slip:
-          g.floats.push_back({number, static_cast<int>(next.size()), static_cast<int>(next.size()) + s.consumes - 1,
-                              op.yarn, op.stitch == stitch_id("sl wyif")});
-          for (int k = 0; k < s.consumes; ++k) next.push_back(live[at + k]);
+        case StitchFamily::slip: {
+          // Stitches slipped one after another ("sl3 wyif") leave one float across them all.
+          const bool in_front = op.stitch == stitch_id("sl wyif");
+          const int first = static_cast<int>(next.size());
+          if (!g.floats.empty() && g.floats.back().course == number && g.floats.back().yarn == op.yarn &&
+              g.floats.back().in_front == in_front && g.floats.back().last + 1 == first)
+            g.floats.back().last = first + s.consumes - 1;
+          else
+            g.floats.push_back({number, first, first + s.consumes - 1, op.yarn, in_front});
+          for (int k = 0; k < s.consumes; ++k) {
+            next.push_back(live[at + k]);
+            next_loose.push_back(loose_over(at + k, 1));
+            next_loose.back().push_back(static_cast<int>(g.floats.size()) - 1);
+          }
           break;
+        }
         case StitchFamily::tuck:
           for (int k = 0; k < s.consumes; ++k) {
             std::vector<int> held = live[at + k];
             held.push_back(new_loop({}, true));
             next.push_back(std::move(held));
+            next_loose.push_back(loose_over(at + k, 1));
           }
           break;
         case StitchFamily::no_stitch: break;
+        case StitchFamily::drop: unravel(g, children, live[at], number); break;
         case StitchFamily::cable:
           for (int j = 0; j < s.produces; ++j) {
             const int made = new_loop(live[at + cable_source(s, j)], false);
             next.push_back({made});
+            next_loose.push_back(loose_over(at + static_cast<std::size_t>(cable_source(s, j)), 1));
           }
           break;
         default: {  // knit, purl, yarn over, decreases: one new loop through all they take
           std::vector<int> parents;
           for (int k = 0; k < s.consumes; ++k) parents.insert(parents.end(), live[at + k].begin(), live[at + k].end());
-          if (s.below) parents = drop_into_stitch_below(g, std::move(parents));
+          if (s.below) parents = drop_into_stitch_below(g, children, std::move(parents));
+          std::vector<int> over = loose_over(at, s.consumes);
           for (int k = 0; k < s.produces; ++k) {
             // An increase works every new loop through the old one; a yarn over has none.
             const int made = new_loop(k == 0 || s.family == StitchFamily::increase ? parents : std::vector<int>{}, false);
             next.push_back({made});
+            if (s.catches) over = catch_floats(g, std::move(over), made, !purled(s), number);
+            next_loose.push_back(over);
           }
           break;
         }
@@ -133,6 +221,7 @@ Graph build(const Pattern& pattern) {
     }
     g.needle.push_back(static_cast<int>(next.size()));
     live = std::move(next);
+    loose = std::move(next_loose);
   }
   g.course_first.push_back(static_cast<int>(g.loops.size()));
   g.live = std::move(live);

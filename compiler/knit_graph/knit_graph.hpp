@@ -5,18 +5,33 @@
 // The needle holds live stitches; a live stitch is the loops held together on one needle
 // (one, or more when tucks stack on it). Working a course, each op takes its stitches'
 // worth of live stitches in face order:
-//   knit, purl, decreases, cables  a new loop through all the loops they take;
+//   knit, purl, decreases, cables  a new loop through all the loops they take; worked under
+//                                  the floats (k under float), it takes them too: the loose
+//                                  floats over its stitch from the rows below, on its side;
 //   yarn over                      a new loop with no parent;
 //   tuck                           a new loop held on the needle with the old ones;
 //   slip                           no new loop: the old stitch moves across, the yarn floats;
+//   drop                           no new loop: the old stitch is let off the needle and its
+//                                  wale unravels down to the yarn over (or cast-on) it grew
+//                                  from, each loop of it left as a straight rung;
 //   no stitch                      nothing.
 #pragma once
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "pattern.hpp"
 
 namespace knitc::knit_graph {
+
+// A course the graph cannot work as written: `course` is its number (pattern course i is
+// i + 1), what() says why and what to do, without a location (the caller has the rows').
+class RowError : public std::invalid_argument {
+ public:
+  RowError(int row, const std::string& what) : std::invalid_argument(what), course(row) {}
+  int course;
+};
 
 struct Loop {
   int course = 0;         // 0 is the cast-on; pattern course i is course i + 1
@@ -27,6 +42,7 @@ struct Loop {
   int order = 0;          // place along its yarn, in working order, from 0
   std::vector<int> parents;  // loops it is pulled through, in face order: indices into Graph::loops
   bool held = false;         // a tuck loop: caught on the needle, knitted off with the next loop
+  bool unravelled = false;   // let off by a drop: no parents, no children, a rung across its wale
 };
 
 // A stretch of yarn that passes stitches by without making a loop: a slipped stitch's
@@ -36,7 +52,12 @@ struct Float {
   int first = 0, last = 0;
   int yarn = 0;
   bool in_front = false;  // on the face side (slip wyif), else behind
+  int caught_by = -1;     // the loop worked under it that lifts it (quilting), or -1: index into Graph::loops
 };
+
+// How many rows below a float can still be caught: a strand slipped further down is no
+// longer loose enough to lift (real patterns catch them 2 to 8 rows up).
+inline constexpr int float_reach = 10;
 
 struct Graph {
   std::vector<Loop> loops;        // the cast-on's, then course by course in face order
@@ -49,7 +70,8 @@ struct Graph {
 
 // Builds the graph. The runtime checks stitch counts as the script runs; the graph checks
 // them again, so the language and the compiler cannot disagree: a course that does not
-// work exactly the live stitches throws std::invalid_argument naming the row.
+// work exactly the live stitches throws RowError naming the row. So does a drop whose
+// wale cannot unravel as one (through a decrease, an increase or a held tuck).
 Graph build(const Pattern& pattern);
 
 }  // namespace knitc::knit_graph

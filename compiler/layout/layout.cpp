@@ -46,6 +46,9 @@ constexpr std::array<double, loop_points> twist_depth = {0.0, 1.0, 1.0, 1.0, 0.6
 // do not meet on one spot (still inside P1, 0.25 W in).
 constexpr double crossed_sinker_gap = 0.15;
 
+// A ladder's rung rises this far (of C) at its middle.
+constexpr double rung_bow = 0.25;
+
 // Of a gathered stitch's parents, the one lying on top: k2tog's left stitch (it leans
 // right), ssk's and sk2p's right one (they lean left), the centre of a cdd.
 std::size_t top_parent(const StitchDef& s, std::size_t parents) {
@@ -119,7 +122,8 @@ void take_loops(Layout& out, const knit_graph::Graph& graph) {
     l.yarn = k.yarn;
     l.order = k.order;
     const StitchDef& s = stitch(k.stitch);
-    if (k.held) l.shape = Template::tuck;
+    if (k.unravelled) l.shape = Template::rung;
+    else if (k.held) l.shape = Template::tuck;
     else if (purled(s)) l.shape = Template::purl;
     else if (s.family == StitchFamily::cable && s.cable.purl_background) {
       // A twist's travelling stitches (those crossing in front) are knit, the rest purled.
@@ -189,6 +193,11 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
           // raised head, so the two heads never lie on one line seen from the face.
           p.z = (purl_column[index] ? -1.0 : 1.0) * (-0.35 * p.z - 0.6 * d * head[i]);
           p.y -= 0.2 * d * head[i];
+          break;
+        case Template::rung:
+          // The loop's yarn let out: straight across the wale in the fabric's plane, bowed
+          // up a quarter course so that it clears the rung below.
+          p = glm::dvec3(W * i / (loop_points - 1.0), rung_bow * C * std::sin(std::numbers::pi * i / (loop_points - 1.0)), 0.0);
           break;
         case Template::bind_off:
           p.y *= 0.85;
@@ -276,6 +285,41 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
   }
 }
 
+// The depth of a loop's left leg (P0..P8) at height y, or its P2's if y is off the leg.
+double left_leg_z(const Loop& l, double y) {
+  for (int k = 0; k + 1 <= loop_points / 2; ++k) {
+    const glm::dvec3 &a = l.data_points[k], &b = l.data_points[k + 1];
+    if ((y - a.y) * (y - b.y) <= 0.0 && std::abs(b.y - a.y) > 1e-12) return a.z + (b.z - a.z) * (y - a.y) / (b.y - a.y);
+  }
+  return l.data_points[2].z;
+}
+
+// Each caught float lifted into the loop that catches it: a little under its parent's
+// head, in depth halfway between that head and the loop's legs, so that the float lies
+// over the head and under the legs as the parent's own head does; from 0.45 W either side
+// of the head's middle (outside the legs, between the heads of the course below). The
+// floats one loop catches stack down from the head, the oldest lowest.
+void lift_caught_floats(Layout& out, const Pattern& pattern, const std::vector<std::vector<int>>& parents) {
+  out.float_lifts.assign(out.floats.size(), {});
+  std::vector<int> caught(out.loops.size(), 0), placed(out.loops.size(), 0);
+  for (const auto& f : out.floats)
+    if (f.caught_by >= 0) ++caught[static_cast<std::size_t>(f.caught_by)];
+  for (std::size_t i = 0; i < out.floats.size(); ++i) {
+    const auto& f = out.floats[i];
+    if (f.caught_by < 0) continue;
+    const auto by = static_cast<std::size_t>(f.caught_by);
+    const Loop& child = out.loops[by];
+    assert(!parents[by].empty());
+    const glm::dvec3 top = out.loops[static_cast<std::size_t>(parents[by].front())].data_points[loop_points / 2];
+    const double d = pattern.yarns[static_cast<std::size_t>(f.yarn)].diameter;
+    const int below = caught[by] - 1 - placed[by]++;  // floats in course order: the first is the lowest
+    const double y = top.y - (0.5 + 0.9 * below) * d;
+    const double z = 0.5 * (top.z + left_leg_z(child, y));
+    const double W = out.loop_width;
+    out.float_lifts[i] = {{top.x - 0.45 * W, y, z}, {top.x, y, z}, {top.x + 0.45 * W, y, z}};
+  }
+}
+
 }  // namespace
 
 Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
@@ -289,6 +333,7 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
   if (bind_off) add_bind_off(out, pattern, graph, parents);
   place_templates(out, pattern, tucks_purled_off(out, parents));
   pull_through(out, pattern, parents, cable_leans(out, parents));
+  lift_caught_floats(out, pattern, parents);
   return out;
 }
 

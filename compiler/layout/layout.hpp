@@ -34,6 +34,7 @@ enum class Template : std::uint8_t {
   purl,      // the plain loop seen from the back: z mirrored, a bump on the face
   tuck,      // held, not knitted: lies behind the old loop, caught by the loop above
   bind_off,  // a low loop lying over toward the next one along the top edge
+  rung,      // unravelled by a drop: the yarn lies straight across its wale, a ladder's rung
 };
 
 struct Loop {
@@ -57,6 +58,9 @@ struct Layout {
   std::vector<double> origin_x;   // x of needle position 0 per course (flat work is centred)
   std::vector<int> direction;     // per course: -1 worked right to left (face view), +1 left to right
   std::vector<knit_graph::Float> floats;  // slipped stitches' floats, course by course
+  // Per float: the points (course-local, left to right) a caught float is lifted through,
+  // under the legs of the loop that catches it and over its parent's head; empty if loose.
+  std::vector<std::vector<glm::dvec3>> float_lifts;
   // The z of yarn floating behind and in front of the fabric: clear of the loops' legs.
   double float_behind = 0.0, float_in_front = 0.0;
 };

@@ -130,6 +130,9 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   // at its own gauge: 118 lone crossings lost, docs/relaxation.md), so they relax whole.
   for (const auto& loop : layout.loops)
     if (loop.shape == layout::Template::tuck) return std::nullopt;
+  // Caught floats are lifted across courses to the loop that catches them: relaxed whole.
+  for (const auto& f : layout.floats)
+    if (f.caught_by >= 0) return std::nullopt;
   const Grid g = grid_of(layout);
   const Interior in{2, layout.courses - 3, 2, layout.wales - 3};
   const int p = smallest_period(layout, g, in, true), q = smallest_period(layout, g, in, false);

@@ -71,6 +71,11 @@ constexpr StitchDef with(StitchDef d, bool twisted, bool below) {
   return d;
 }
 
+constexpr StitchDef catching(StitchDef d) {
+  d.catches = true;
+  return d;
+}
+
 // After the core: the rest of the vocabulary knitters print. Ids are indices, so new
 // stitches go at the end.
 constexpr auto more = std::to_array<StitchDef>({
@@ -101,6 +106,13 @@ constexpr auto more = std::to_array<StitchDef>({
     plain("nupp", 1, 5, F::increase, Lean::centre, ""),
     plain("k5tog", 5, 1, F::decrease, Lean::right, "p5tog"),
     plain("p5tog", 5, 1, F::decrease, Lean::right, "k5tog"),
+    // Drop stitch patterns: a yarn over made rows below is let off the needle, and the
+    // wale above it unravels into a ladder. The same worked from either side.
+    plain("drop", 1, 0, F::drop, Lean::none, "drop"),
+    // Quilting and butterfly stitches: a knit (purl) worked under the floats left by
+    // stitches slipped rows below, catching them up.
+    catching(plain("k under float", 1, 1, F::knit, Lean::none, "p under float")),
+    catching(plain("p under float", 1, 1, F::purl, Lean::none, "k under float")),
 });
 
 // Crosses in the Stitch Maps notation n/m XX and n/c/n XX, generated: n stitches cross

@@ -25,6 +25,7 @@ enum class StitchFamily : std::uint8_t {
   cable,      // stitches crossed over their neighbours
   increase,   // one old loop worked several times (kfb, ctr dbl inc): every new loop through it
   no_stitch,  // a chart's grey square: a placeholder, no loop
+  drop,       // the old loop let off the needle: its wale unravels down to a yarn over
 };
 
 enum class Lean : std::uint8_t { none, left, right, centre };
@@ -49,6 +50,10 @@ struct StitchDef {
   Cable cable;                   // for the cable family
   bool twisted = false;          // worked through the back loop: the loop crossed on itself
   bool below = false;            // worked into the stitch below: the live loop drops onto it
+  // Worked under the loose strands (quilting, butterfly): the new loop also takes every
+  // float not yet caught that lies over its stitch on the side it is pulled out to (the
+  // face for a knit, the back for a purl), lifting them to it.
+  bool catches = false;
   // The stitch as it shows on the face when worked on a wrong-side row (k shows as p);
   // empty if it has no wrong-side form.
   std::string_view wrong_side_face;

@@ -70,18 +70,19 @@ struct PieceBuilder {
   }
 };
 
-// Whether a slip-stitch float in front of the fabric covers x0..x1 of the course.
-bool floats_in_front(const Layout& layout, int course, int yarn, double x0, double x1) {
+// The slip-stitch float of this yarn that covers x0..x1 of the course: its index into
+// layout.floats, or -1 (the yarn passes behind, as stranded work's does).
+int float_over(const Layout& layout, int course, int yarn, double x0, double x1) {
   const double W = layout.loop_width;
   // The graph lists floats course by course: only this course's are looked at.
   const auto by_course = [](const knit_graph::Float& f, int c) { return f.course < c; };
   for (auto f = std::lower_bound(layout.floats.begin(), layout.floats.end(), course, by_course);
        f != layout.floats.end() && f->course == course; ++f) {
-    if (f->yarn != yarn || !f->in_front) continue;
+    if (f->yarn != yarn) continue;
     const double a = layout.origin_x[course] + f->first * W, b = layout.origin_x[course] + (f->last + 1) * W;
-    if (std::min(x0, x1) < b - 1e-9 && std::max(x0, x1) > a + 1e-9) return true;
+    if (std::min(x0, x1) < b - 1e-9 && std::max(x0, x1) > a + 1e-9) return static_cast<int>(f - layout.floats.begin());
   }
-  return false;
+  return -1;
 }
 
 std::vector<Piece> trace_smooth(const Layout& layout) {
@@ -112,8 +113,20 @@ std::vector<Piece> trace_smooth(const Layout& layout) {
         // Needle positions passed by within the course, or a cable's sinker loop crossing
         // behind it: a float, behind unless slipped wyif.
         if (std::abs(layout.loops[index].wale - b.last_wale) > 1 || std::abs(start.x - b.last_local.x) > 0.5 * W) {
-          const bool front = floats_in_front(layout, course, y, b.last_local.x, start.x);
-          b.float_between(b.last_local, start, front ? layout.float_in_front : layout.float_behind, course);
+          const int f = float_over(layout, course, y, b.last_local.x, start.x);
+          const double z = f >= 0 && layout.floats[static_cast<std::size_t>(f)].in_front ? layout.float_in_front : layout.float_behind;
+          const auto* lift = f >= 0 && !layout.float_lifts.empty() ? &layout.float_lifts[static_cast<std::size_t>(f)] : nullptr;
+          if (lift && !lift->empty()) {
+            // Caught: up to the loop that lifts it and back down, through its lift points
+            // in the order the yarn goes.
+            const bool rightwards = start.x > b.last_local.x;
+            const glm::dvec3 first = rightwards ? lift->front() : lift->back(), last = rightwards ? lift->back() : lift->front();
+            b.float_between(b.last_local, first, z, course);
+            for (std::size_t p = 0; p < lift->size(); ++p) b.add((*lift)[rightwards ? p : lift->size() - 1 - p], course);
+            b.float_between(last, start, z, course);
+          } else {
+            b.float_between(b.last_local, start, z, course);
+          }
         }
       } else if (course == b.last_course + 1) {
         const glm::dvec3 a = b.last_local;

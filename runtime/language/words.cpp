@@ -116,6 +116,14 @@ constexpr Entry entries[] = {
       "knit five together: four stitches less (a nupp gathered from the right side)"}},
     {"p5tog", {"p5 tog", "p5tog", "p5tog", false,
       "purl five together: four stitches less (a nupp gathered on the wrong side); on a wrong-side row it shows as k5tog"}},
+    {"drop", {"drop st|drop stitch|drop next st|drop the next st|drop the next stitch|drop st and unravel|drop next st and unravel to yo|drop the next stitch and unravel it to the yo", "D", "drop", true,
+      "drop: the stitch is let off the needle and its wale unravels down to the yarn over it grew from, a ladder of straight rungs; one stitch less"}},
+    {"k under float", {"k1 under float|k under floats|k1 under floats|k under loose strand|k1 under loose strand|k under loose strands|k1 under loose strands|k under the loose strand|k1 under the loose strand|k under the loose strands|k1 under the loose strands|k under strand|k1 under strand|k next st under the loose strand|insert the needle under the loose strand in front and k the next st|insert the needle under the loose strand and k the next st|lift the loose strand and k it together with the next st|lift the loose strands and k them together with the next st",
+      "k_under", "k_under", false,
+      "knit under the loose strands (quilting, butterfly): the new loop catches every float lying over its stitch on the face from the rows below and lifts it"}},
+    {"p under float", {"p1 under float|p under floats|p1 under floats|p under loose strand|p1 under loose strand|p under loose strands|p1 under loose strands|p under the loose strand|p1 under the loose strand|p under strand|p1 under strand",
+      "p_under", "p_under", false,
+      "purl under the loose strands: the new loop catches every float lying over its stitch on the back; on a wrong-side row it shows as k under float"}},
 };
 
 // A generated cross: its notation is its name; its symbol the name without the space.
