@@ -195,7 +195,9 @@ TEST(Stitches, EveryCrossIsSpelledByItsNotation) {
     for (std::size_t j = i + 1; j < table.size(); ++j)
       EXPECT_NE(cross_notation(table[j]), notation) << s.name << " and " << table[j].name << " are one cross";
   }
-  EXPECT_EQ(cables, 8 * (16 + 9));  // every cross of the generated range, the core's 14 among them
+  // Every cross of the generated range, the core's 14 among them, and the purled face of
+  // each of the four kinds of knit cross (RC, LC, RT, LT) worked from the back.
+  EXPECT_EQ(cables, 8 * (16 + 9) + 4 * (16 + 9));
 }
 
 // Every stitch has its words, and the words follow the facts: a chart symbol, a summary;

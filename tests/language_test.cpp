@@ -139,13 +139,17 @@ TEST(Charts, ErrorsPointAtTheChartLine) {
 
 TEST(Charts, StitchesWithoutAWrongSideFormStayOnRightSideRows) {
   try {
-    run("cast_on(8)\nchart [[\n. . C4F---- . .\n. . | | | | . .\n]]\n", true);
+    run("cast_on(8)\nchart [[\n. . ^ . . .\n. . | | | | . .\n]]\n", true);
     FAIL();
   } catch (const runtime::PatternError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "t.lua:4: chart row 2 (row 2) is a wrong-side row: C4F has no wrong-side form in knitc; put it on a "
+              "t.lua:4: chart row 2 (row 2) is a wrong-side row: cdd has no wrong-side form in knitc; put it on a "
               "right-side (odd) row");
   }
+  // A knit cross has one (worked from the back as purls crossing): charted on a
+  // wrong-side row, the face shows it as charted.
+  const Pattern p = run("cast_on(8)\nchart [[\n. . C4F---- . .\n. . | | | | . .\n]]\n", true);
+  EXPECT_EQ(stitch(p.courses[1].ops[2].stitch).name, "C4F");
 }
 
 TEST(ChartText, NumbersEachRowOnTheSideItIsReadFrom) {

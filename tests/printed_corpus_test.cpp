@@ -61,6 +61,7 @@ const std::map<std::string, Read> reads = {
     {"us_trishknits_braided_scarf", {35, repeated(8, 35)}},            // "Cast on 35"; crosses in brackets
     {"vintage_begin_to_knit_pattern2", {34, repeated(4, 34)}},  // "Cast on 34"; row 3's last repeat ends "Y O, K 2"
     {"vintage_spool_learnhow_k2p2_ridges", {24, repeated(8, 24)}},  // "an even number", knit 2, purl 2 across
+    {"vintage_spool98_cable_stitch", {30, repeated(8, 30)}},  // "Cast on 30 sts."; row 8's cable crossed from the back
 };
 
 // What knitc says of the rest, at their line: what it cannot read yet, and sources wrong
@@ -85,8 +86,7 @@ const std::map<std::string, std::string> refused = {
     {"us_purl_twist_knot_rounds", "unknown stitch 'p2tog and leave on needle'"},
     {"us_framed_cross_stitch_cable", "unknown stitch 'seed 4'"},
     {"us_knittingfool_table_1263", ":1: the knitspeak text has no rows"},  // a table, and a cluster in words
-    // Crosses worked on wrong-side rows, and crosses of ribbed stitches.
-    {"vintage_spool98_cable_stitch", "is a wrong-side row: C6B worked from the wrong side crosses stitches that show as purls"},
+    // Crosses of ribbed stitches.
     {"us_reversible_cable_scarf_craftzine", "unknown stitch 'slip 8 sts onto cable needle'"},
     // Ambiguous, as knitc refuses to guess.
     {"uk_knitforvictory_ladder_scarf", "'inc' could mean kfb, m1 or yo"},

@@ -93,20 +93,33 @@ TEST(WrongSideCrosses, APurlBackgroundCrossShowsAsItsMirrorFromTheFace) {
     SCOPED_TRACE(std::string(stitch(id).name));
     EXPECT_EQ(wrong_side_face(*face), std::optional<StitchId>(id));
     EXPECT_EQ(stitch(*face).consumes, stitch(id).consumes);
-    EXPECT_TRUE(stitch(*face).cable.purl_background);
+    EXPECT_EQ(stitch(*face).cable.purl_background, stitch(id).cable.purl_background);
+    // A knit cross shows purled from the back, and a purled one knit again.
+    if (!stitch(id).cable.purl_background) {
+      EXPECT_NE(stitch(*face).cable.purled, stitch(id).cable.purled);
+    }
   }
 }
 
-TEST(WrongSideCrosses, AKnitCrossFromTheBackIsRefusedWithTheReason) {
-  try {
-    run("", "cast_on(8)\nrow \"k8\"\nrow \"p2, C4F, p2\"\n");
-    FAIL() << "no error";
-  } catch (const runtime::PatternError& e) {
-    EXPECT_NE(std::string(e.what()).find("t.lua:4: row 2 \"p2, C4F, p2\" is a wrong-side row: C4F worked from the wrong side "
-                                         "crosses stitches that show as purls on the face"),
-              std::string::npos)
-        << e.what();
-  }
+// C4F worked from the back: "sl 2 to cn, hold in front" holds the leftmost two (as the
+// face shows them) behind the fabric; they end at the right, and the other two move left
+// on top. Every stitch shows as a purl: 2/2 LC purled, drawn with purl loops.
+TEST(WrongSideCrosses, AKnitCrossFromTheBackShowsPurlsCrossing) {
+  const Pattern p = run("", "cast_on(8)\nrow \"k8\"\nrow \"p2, C4F, p2\"\n");
+  EXPECT_EQ(names(p.courses[1]), (std::vector<std::string>{"k", "k", "2/2 LC purled", "k", "k"}));
+  const StitchDef& face = stitch(stitch_id("2/2 LC purled"));
+  EXPECT_TRUE(purled(face));
+  EXPECT_TRUE(face.cable.front);
+  EXPECT_EQ(face.cable.held, 2);
+  const auto l = layout::lay_out(p);
+  for (const auto& loop : l.loops)
+    if (loop.course == 2 && loop.wale >= 2 && loop.wale < 6) {
+      EXPECT_EQ(loop.shape, layout::Template::purl);
+    }
+  // An unequal cross changes its numbers as the purl-background ones do: C4B held 2 of 4,
+  // 3/1 RC worked so is 1/3 RC purled.
+  const Pattern q = run("", "cast_on(8)\nrow \"k8\"\nrow \"p2, 3/1 RC, p2\"\n");
+  EXPECT_EQ(names(q.courses[1]), (std::vector<std::string>{"k", "k", "1/3 RC purled", "k", "k"}));
 }
 
 // A pattern whose row 1 is printed "(WS)" says so in every notation.

@@ -132,7 +132,8 @@ constexpr CrossKind cross_kinds[] = {
 bool same_cross(const StitchDef& a, const StitchDef& b) {
   return a.family == F::cable && b.family == F::cable && a.consumes == b.consumes && a.twisted == b.twisted &&
          a.cable.held == b.cable.held && a.cable.front == b.cable.front &&
-         a.cable.purl_background == b.cable.purl_background && a.cable.middle == b.cable.middle;
+         a.cable.purl_background == b.cable.purl_background && a.cable.middle == b.cable.middle &&
+         a.cable.purled == b.cable.purled;
 }
 
 std::vector<StitchDef> build_table() {
@@ -159,19 +160,28 @@ std::vector<StitchDef> build_table() {
   }
   // A cross worked from the wrong side, as its right-side words say ("sl 1 to cn, hold in
   // back, k2, p1 from cn"), seen from the face. The held stitches are then the leftmost,
-  // and they end at the right; held in back (away from the knitter) they lie on top.
-  // Every stitch shows the other face: a purl-background cross keeps its knit stitches
-  // on top, so 2/1 RPC worked so is 1/2 RPC; a cross of knit stitches shows purls
-  // crossing, which the table has not (no wrong-side form).
-  for (StitchDef& d : all) {
-    if (d.family != F::cable || !d.cable.purl_background || d.cable.middle > 0) continue;
-    const int others = d.consumes - d.cable.held;
+  // and they end at the right; held in back (away from the knitter) they lie on top. In
+  // a two-part cross the groups change places: the struct's held group (a right cross's
+  // under stitches, a left cross's top ones) is the one that was not held; a three-part
+  // cross is symmetric and keeps its facts. Every stitch shows the other face: a
+  // purl-background cross keeps its knit stitches on top, so 2/1 RPC worked so is 1/2
+  // RPC, and a cross of knit stitches shows purls crossing, a purled cross of its own
+  // (C4B worked so is 2/2 RC purled), made here with its way back.
+  const std::size_t crosses = all.size();
+  for (std::size_t i = 0; i < crosses; ++i) {
+    const StitchDef& d = all[i];
+    if (d.family != F::cable || (d.cable.purl_background && d.cable.middle > 0)) continue;
     StitchDef face = d;
-    // The groups change places: the struct's held group (a right cross's under stitches,
-    // a left cross's top ones) is the one that was not held.
-    face.cable.held = others;
-    const auto same = std::find_if(all.begin(), all.end(), [&](const StitchDef& e) { return same_cross(e, face); });
-    if (same != all.end()) d.wrong_side_face = same->name;
+    if (d.cable.middle == 0) face.cable.held = d.consumes - d.cable.held;
+    if (!d.cable.purl_background) face.cable.purled = true;
+    auto same = std::find_if(all.begin(), all.end(), [&](const StitchDef& e) { return same_cross(e, face); });
+    if (same == all.end()) {
+      face.name = text.emplace_back(cross_notation(face));
+      face.wrong_side_face = d.name;
+      all.push_back(face);
+      same = all.end() - 1;
+    }
+    all[i].wrong_side_face = same->name;
   }
   return all;
 }
@@ -201,6 +211,7 @@ StitchId stitch_id(std::string_view name) {
 bool purled(const StitchDef& s) {
   switch (s.family) {
     case StitchFamily::purl: return true;
+    case StitchFamily::cable: return s.cable.purled;
     case StitchFamily::decrease:
     case StitchFamily::increase:
     case StitchFamily::yarn_over: return s.name.front() == 'p' || s.name == "ssp" || s.name == "m1p";
@@ -231,6 +242,7 @@ std::string cross_notation(const StitchDef& s) {
   out += c.front ? "L" : "R";
   if (c.purl_background) out += "P";
   out += s.twisted ? "T" : "C";
+  if (c.purled) out += " purled";
   return out;
 }
 

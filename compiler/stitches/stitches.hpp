@@ -39,6 +39,9 @@ struct Cable {
   // Three-part crosses (n/c/n): the `middle` stitches stay in the centre, the outer
   // `held` on each side change places. 0 for two-part crosses.
   int middle = 0;
+  // A cross of knit stitches worked on a wrong-side row, seen from the face: every stitch
+  // of it shows as a purl.
+  bool purled = false;
 };
 
 struct StitchDef {
@@ -75,7 +78,8 @@ struct CrossCounts {
 // For the cable family; asserts s is a cable.
 CrossCounts cross_counts(const StitchDef& s);
 // The cable family's crosses in the Stitch Maps notation ("2/2 LC", "2/1/2 RPC"): the
-// name a cross's facts give it. Empty for other stitches.
+// name a cross's facts give it, "2/2 RC purled" for a knit cross seen from the back.
+// Empty for other stitches.
 std::string cross_notation(const StitchDef& s);
 
 }  // namespace knitc

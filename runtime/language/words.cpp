@@ -139,6 +139,7 @@ StitchWords cross_words(const StitchDef& d) {
                      " over " + (three ? std::to_string(n.middle) + " and " + std::to_string(n.under) : std::to_string(n.under)) +
                      ", the top " + (c.front ? "moving left" : "moving right");
   if (c.purl_background) what += three ? ", the middle purled" : ", the one below purled";
+  if (c.purled) what += ", every stitch purled (a knit cross worked on a wrong-side row, seen from the face)";
   StitchWords w;
   w.symbol = text.emplace_back(std::move(symbol));
   w.summary = text.emplace_back(std::move(what));

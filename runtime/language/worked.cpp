@@ -162,8 +162,8 @@ std::variant<std::vector<Op>, TextError> face_view(std::span<const Worked> worke
       const auto face = wrong_side_face(w.stitch);
       if (!face && stitch(w.stitch).family == StitchFamily::cable)
         return TextError{std::string(stitch(w.stitch).name) +
-                         " worked from the wrong side crosses stitches that show as purls on the face, which knitc "
-                         "cannot draw yet; work it on a right-side row, or as a cross over a purl background (2/2 RPC)"};
+                         " worked from the wrong side shows purled outer stitches crossing around a knit middle on the "
+                         "face, which knitc cannot draw yet; work it on a right-side row"};
       if (!face)
         return TextError{std::string(stitch(w.stitch).name) +
                          " has no wrong-side form; work it on a right-side row"};
