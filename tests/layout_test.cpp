@@ -155,6 +155,24 @@ TEST(YarnPathsOfFabrics, ACaughtFloatIsLiftedIntoTheLoopThatCatchesIt) {
   EXPECT_TRUE(std::any_of(points.begin(), points.end(), [&](const glm::dvec3& q) { return glm::distance(q, lift) < 1e-9; }));
 }
 
+// A nupp's five loops share the one stitch's width, so its row is as wide as the rows
+// around it and the stitches beside it stay over their parents.
+TEST(Templates, ANuppBunchesItsFiveLoopsIntoOneStitchWidth) {
+  const auto l = layout::lay_out(run("cast_on(5)\nrow \"k\"\nrow \"p\"\nrow \"k2, nupp, k2\"\nrow \"p2, p5tog, p2\"\n"));
+  const double W = 4.0;
+  ASSERT_EQ(l.needle[3], 9);
+  for (int c = 0; c < l.courses; ++c) EXPECT_NEAR(layout::course_width(l, c), 5 * W, 1e-9) << "course " << c;
+  EXPECT_NEAR(l.origin_x[3], l.origin_x[2], 1e-9);
+  for (int w = 2; w < 7; ++w) {
+    const auto& loop = at(l, 3, w);
+    EXPECT_NEAR(loop.data_points[16].x - loop.data_points[0].x, W / 5, 1e-9);
+  }
+  // The loops beside the nupp sit where the loops below them do.
+  EXPECT_NEAR(at(l, 3, 8).data_points[0].x, at(l, 2, 4).data_points[0].x, 1e-9);
+  // Neighbours in the bunch lie at different depths.
+  EXPECT_GT(std::abs(at(l, 3, 3).data_points[4].z - at(l, 3, 4).data_points[4].z), 0.5);
+}
+
 // With nothing slipped below it, a stitch worked under the loose strand is refused.
 TEST(YarnPathsOfFabrics, AStitchUnderNoFloatIsRefused) {
   const Pattern p = run("cast_on(3)\nrow \"k\"\nrow \"p\"\nrow \"k1, k under float, k1\"\n");

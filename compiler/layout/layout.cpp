@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 
 namespace knitc::layout {
 
@@ -77,7 +78,29 @@ namespace {
 // The passes of lay_out, in order. Each works on the layout made so far.
 
 // x of a needle position's centre in its course.
-double centre_x(const Layout& out, int course, int slot) { return out.origin_x[course] + (slot + 0.5) * out.loop_width; }
+double centre_x(const Layout& out, int course, int slot) {
+  const double o = out.origin_x[course], W = out.loop_width;
+  // Before any cluster, as whole loop widths always were: the same coordinates to the bit.
+  if (out.slot_x[course][slot + 1] == o + (slot + 1) * W) return o + (slot + 0.5) * W;
+  return 0.5 * (out.slot_x[course][slot] + out.slot_x[course][slot + 1]);
+}
+// A loop's width: W, or its share of a cluster's (exactly W for every other loop, so
+// that fabrics without clusters keep their coordinates to the bit).
+double width_of(const Layout& out, const Loop& l) {
+  if (stitch(l.stitch).cluster_width <= 0.0 || l.shape == Template::tuck) return out.loop_width;
+  return out.slot_x[l.course][l.wale + 1] - out.slot_x[l.course][l.wale];
+}
+
+// The width of each needle position after each course, mm: W, or a cluster's share.
+std::vector<std::vector<double>> slot_widths(const Layout& out, const knit_graph::Graph& graph) {
+  std::vector<std::vector<double>> width(static_cast<std::size_t>(out.courses));
+  for (int c = 0; c < out.courses; ++c) width[c].assign(static_cast<std::size_t>(out.needle[c]), out.loop_width);
+  for (const knit_graph::Loop& k : graph.loops) {
+    const StitchDef& s = stitch(k.stitch);
+    if (s.cluster_width > 0.0 && !k.held) width[k.course][k.slot] = s.cluster_width * out.loop_width / s.produces;
+  }
+  return width;
+}
 
 // The courses: their needles, where each starts, which way each is worked.
 Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, bool bind_off) {
@@ -95,9 +118,21 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
   if (bind_off) out.needle.push_back(static_cast<int>(graph.live.size()));
   out.courses = static_cast<int>(out.needle.size());
   out.wales = out.needle.empty() ? 0 : *std::max_element(out.needle.begin(), out.needle.end());
+  const auto widths = slot_widths(out, graph);
+  double widest = 0.0;
+  for (const auto& w : widths) widest = std::max(widest, std::accumulate(w.begin(), w.end(), 0.0));
   for (int c = 0; c < out.courses; ++c) {
     // Flat work is centred on the widest course; a tube starts each round at angle zero.
-    out.origin_x.push_back(pattern.knitting == Knitting::flat ? 0.5 * (out.wales - out.needle[c]) * W : 0.0);
+    const double width = std::accumulate(widths[c].begin(), widths[c].end(), 0.0);
+    out.origin_x.push_back(pattern.knitting == Knitting::flat ? 0.5 * (widest - width) : 0.0);
+    std::vector<double>& edges = out.slot_x.emplace_back(1, out.origin_x.back());
+    // Up to the first cluster, whole loop widths by multiplying (not summing), so that a
+    // fabric without clusters keeps the very same coordinates.
+    bool uniform = true;
+    for (std::size_t k = 0; k < widths[c].size(); ++k) {
+      uniform = uniform && widths[c][k] == W;
+      edges.push_back(uniform ? out.origin_x.back() + static_cast<double>(k + 1) * W : edges.back() + widths[c][k]);
+    }
     int direction = -1;  // in the round every course runs right to left
     if (pattern.knitting == Knitting::flat) {
       if (c == 0) direction = !pattern.courses.empty() && pattern.courses.front().side == Side::wrong ? -1 : 1;
@@ -180,10 +215,12 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
   const double W = out.loop_width, C = out.course_spacing;
   for (std::size_t index = 0; index < out.loops.size(); ++index) {
     Loop& l = out.loops[index];
-    const glm::dvec3 origin(out.origin_x[l.course] + l.wale * W, l.course * C, 0.0);
+    const glm::dvec3 origin(out.slot_x[l.course][l.wale], l.course * C, 0.0);
     const double d = pattern.yarns[l.yarn].diameter;
+    const double w = width_of(out, l);
     for (int i = 0; i < loop_points; ++i) {
       glm::dvec3 p = plain[i];
+      if (w != W) p.x *= w / W;
       switch (l.shape) {
         case Template::knit: break;
         case Template::purl: p.z = -p.z; break;
@@ -197,7 +234,7 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
         case Template::rung:
           // The loop's yarn let out: straight across the wale in the fabric's plane, bowed
           // up a quarter course so that it clears the rung below.
-          p = glm::dvec3(W * i / (loop_points - 1.0), rung_bow * C * std::sin(std::numbers::pi * i / (loop_points - 1.0)), 0.0);
+          p = glm::dvec3(w * i / (loop_points - 1.0), rung_bow * C * std::sin(std::numbers::pi * i / (loop_points - 1.0)), 0.0);
           break;
         case Template::bind_off:
           p.y *= 0.85;
@@ -206,13 +243,16 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
           break;
       }
       if (stitch(l.stitch).twisted && (l.shape == Template::knit || l.shape == Template::purl)) {
-        p.x += twist_swap[i] * (W - 2.0 * p.x);
+        p.x += twist_swap[i] * (w - 2.0 * p.x);
         p.z += twist_depth[i] * 0.55 * d;
       }
+      // A cluster's loops, a fifth of a loop width each, alternate in depth so that
+      // neighbours' legs do not lie on one line.
+      if (w != W) p.z += (l.wale % 2 ? 0.5 : -0.5) * d * std::sin(std::numbers::pi * i / (loop_points - 1.0));
       l.data_points[i] = origin + p;
     }
     // Exactly the next loop's P0, not origin + W rounded differently.
-    l.data_points[loop_points - 1] = glm::dvec3(out.origin_x[l.course] + (l.wale + 1) * W, l.course * C, 0.0);
+    l.data_points[loop_points - 1] = glm::dvec3(out.slot_x[l.course][l.wale + 1], l.course * C, 0.0);
   }
 }
 
@@ -269,16 +309,21 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
     double mean = 0.0;
     for (int p : parents[i]) mean += centre_x(out, out.loops[p].course, out.loops[p].wale);
     mean /= static_cast<double>(parents[i].size());
-    // The legs move at most 0.4 W, or their sinker loops would double back on the
+    // The legs move at most 0.4 W (of their own width), or their sinker loops would double back on the
     // neighbours' (P15 lies 0.25 W inside P16); the parents' heads take the rest.
-    const double meet = cx + std::clamp(0.5 * (mean - cx), -0.4 * W, 0.4 * W);
+    const double reach = 0.4 * width_of(out, child);
+    const double meet = cx + std::clamp(0.5 * (mean - cx), -reach, reach);
     for (std::size_t k = 0; k < parents[i].size(); ++k) {
       Loop& parent = out.loops[parents[i][k]];
       const double px = centre_x(out, parent.course, parent.wale);
       double dz = 0.0;
       if (s.family == StitchFamily::decrease && parents[i].size() > 1)
         dz = (k == top_parent(s, parents[i].size()) ? 0.5 : -0.5) * d;
-      const glm::dvec3 shift(meet - px, (child.course - parent.course - 1) * C, dz);
+      // More than three gathered (a nupp's five): the heads only halfway to the meet, and
+      // the ones below the top alternating in depth, or they would lie on one line.
+      const bool many = s.family == StitchFamily::decrease && parents[i].size() > 3;
+      if (many && k != top_parent(s, parents[i].size())) dz = (k % 2 ? -0.5 : -1.1) * d;
+      const glm::dvec3 shift(many ? 0.5 * (meet - px) : meet - px, (child.course - parent.course - 1) * C, dz);
       for (int j = 0; j < loop_points; ++j) parent.data_points[j] += head[j] * shift;
     }
     for (int j = 0; j < loop_points; ++j) child.data_points[j].x += legs[j] * (meet - cx);
@@ -337,9 +382,14 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
   return out;
 }
 
+double course_width(const Layout& layout, int course) {
+  const auto& edges = layout.slot_x[static_cast<std::size_t>(course)];
+  return edges.back() - edges.front();
+}
+
 glm::dvec3 to_fabric(const Layout& layout, const glm::dvec3& p, int course) {
   if (layout.knitting == Knitting::flat) return p;
-  const double circumference = layout.needle[course] * layout.loop_width;
+  const double circumference = course_width(layout, course);
   if (circumference <= 0.0) return p;
   const double turn = p.x / circumference;  // 0 at needle position 0, 1 a round later
   const double angle = 2.0 * std::numbers::pi * turn - std::numbers::pi;

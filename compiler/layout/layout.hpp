@@ -56,6 +56,10 @@ struct Layout {
   std::vector<Loop> loops;        // course by course, left to right within a course
   std::vector<int> needle;        // needle positions per course
   std::vector<double> origin_x;   // x of needle position 0 per course (flat work is centred)
+  // Per course: the x of each needle position's left edge, and of the last one's right
+  // edge (needle + 1 values from origin_x). A position is one loop width, a cluster's
+  // loops (the nupp's) narrower.
+  std::vector<std::vector<double>> slot_x;
   std::vector<int> direction;     // per course: -1 worked right to left (face view), +1 left to right
   std::vector<knit_graph::Float> floats;  // slipped stitches' floats, course by course
   // Per float: the points (course-local, left to right) a caught float is lifted through,
@@ -71,8 +75,11 @@ struct Layout {
 Layout lay_out(const Pattern& pattern);
 Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph);
 
+// The width of a course, mm: from its first needle position's left edge to its last's right.
+double course_width(const Layout& layout, int course);
+
 // A course-local point in fabric coordinates: the same point for flat work, wrapped onto
-// the tube (circumference: the course's needle positions x W) for work in the round.
+// the tube (circumference: the course's width) for work in the round.
 glm::dvec3 to_fabric(const Layout& layout, const glm::dvec3& local, int course);
 
 }  // namespace knitc::layout

@@ -130,9 +130,13 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   // at its own gauge: 118 lone crossings lost, docs/relaxation.md), so they relax whole.
   for (const auto& loop : layout.loops)
     if (loop.shape == layout::Template::tuck) return std::nullopt;
-  // Caught floats are lifted across courses to the loop that catches them: relaxed whole.
+  // Caught floats are lifted across courses to the loop that catches them, and clusters
+  // narrow their needle positions, so neither lies on the lattice: relaxed whole.
   for (const auto& f : layout.floats)
     if (f.caught_by >= 0) return std::nullopt;
+  for (const auto& edges : layout.slot_x)
+    for (std::size_t k = 1; k < edges.size(); ++k)
+      if (std::abs(edges[k] - edges[k - 1] - layout.loop_width) > 1e-9 * layout.loop_width) return std::nullopt;
   const Grid g = grid_of(layout);
   const Interior in{2, layout.courses - 3, 2, layout.wales - 3};
   const int p = smallest_period(layout, g, in, true), q = smallest_period(layout, g, in, false);
@@ -174,6 +178,8 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
     const int course = repeat.course0 + c;
     tile.needle.push_back(repeat.wales);
     tile.origin_x.push_back(layout.origin_x[static_cast<std::size_t>(course)]);
+    const auto& edges = layout.slot_x[static_cast<std::size_t>(course)];
+    tile.slot_x.emplace_back(edges.begin() + repeat.wale0, edges.begin() + repeat.wale0 + repeat.wales + 1);
     tile.direction.push_back(layout.direction[static_cast<std::size_t>(course)]);
     for (int w = 0; w < repeat.wales; ++w) {
       const auto i = static_cast<std::size_t>(g(course, repeat.wale0 + w));

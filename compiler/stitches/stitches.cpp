@@ -71,6 +71,11 @@ constexpr StitchDef with(StitchDef d, bool twisted, bool below) {
   return d;
 }
 
+constexpr StitchDef clustered(StitchDef d, double width) {
+  d.cluster_width = width;
+  return d;
+}
+
 constexpr StitchDef catching(StitchDef d) {
   d.catches = true;
   return d;
@@ -103,7 +108,9 @@ constexpr auto more = std::to_array<StitchDef>({
     // Estonian lace's nupp, as Stitch Maps counts it: five loops out of one stitch, worked
     // loosely, gathered by a five-together on the next row. Printed (k1, yo, k1, yo, k1);
     // as an increase every loop, the yarn overs' too, is pulled through the old stitch.
-    plain("nupp", 1, 5, F::increase, Lean::centre, ""),
+    // Its loops bunch into 2.5 loop widths (half a width each, their legs still a yarn
+    // apart at the default proportions), a bump about as wide as real nupps.
+    clustered(plain("nupp", 1, 5, F::increase, Lean::centre, ""), 1.0),
     plain("k5tog", 5, 1, F::decrease, Lean::right, "p5tog"),
     plain("p5tog", 5, 1, F::decrease, Lean::right, "k5tog"),
     // Drop stitch patterns: a yarn over made rows below is let off the needle, and the

@@ -57,6 +57,9 @@ struct StitchDef {
   // float not yet caught that lies over its stitch on the side it is pulled out to (the
   // face for a knit, the back for a purl), lifting them to it.
   bool catches = false;
+  // A cluster (the nupp): its new loops share this many loop widths of needle positions
+  // between them, bunched, where each loop would otherwise take one. 0: one each.
+  double cluster_width = 0.0;
   // The stitch as it shows on the face when worked on a wrong-side row (k shows as p);
   // empty if it has no wrong-side form.
   std::string_view wrong_side_face;

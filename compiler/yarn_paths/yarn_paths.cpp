@@ -73,13 +73,13 @@ struct PieceBuilder {
 // The slip-stitch float of this yarn that covers x0..x1 of the course: its index into
 // layout.floats, or -1 (the yarn passes behind, as stranded work's does).
 int float_over(const Layout& layout, int course, int yarn, double x0, double x1) {
-  const double W = layout.loop_width;
   // The graph lists floats course by course: only this course's are looked at.
   const auto by_course = [](const knit_graph::Float& f, int c) { return f.course < c; };
   for (auto f = std::lower_bound(layout.floats.begin(), layout.floats.end(), course, by_course);
        f != layout.floats.end() && f->course == course; ++f) {
     if (f->yarn != yarn) continue;
-    const double a = layout.origin_x[course] + f->first * W, b = layout.origin_x[course] + (f->last + 1) * W;
+    const auto& edges = layout.slot_x[static_cast<std::size_t>(course)];
+    const double a = edges[static_cast<std::size_t>(f->first)], b = edges[static_cast<std::size_t>(f->last) + 1];
     if (std::min(x0, x1) < b - 1e-9 && std::max(x0, x1) > a + 1e-9) return static_cast<int>(f - layout.floats.begin());
   }
   return -1;
@@ -134,7 +134,7 @@ std::vector<Piece> trace_smooth(const Layout& layout) {
         if (layout.knitting == Knitting::round) {
           // Round the tube: in this course's coordinates the next round starts a turn to the left.
           glm::dvec3 next = start;
-          next.x -= layout.needle[course] * W;
+          next.x -= layout::course_width(layout, course);
           next.y -= layout.course_spacing;
           if (std::abs(a.x - next.x) > 0.5 * W) b.float_between(a, next, layout.float_behind, from);
         } else if (layout.direction[from] != layout.direction[course]) {
