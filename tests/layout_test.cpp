@@ -173,6 +173,39 @@ TEST(Templates, ANuppBunchesItsFiveLoopsIntoOneStitchWidth) {
   EXPECT_GT(std::abs(at(l, 3, 3).data_points[4].z - at(l, 3, 4).data_points[4].z), 0.5);
 }
 
+// Wrap 3: three knits, each through its own stitch, then the yarn wound twice round
+// them: between the group's last worked loop and the next, the yarn passes in front of
+// the three and behind them, twice, within the group's width and up its legs.
+TEST(YarnPathsOfFabrics, AWrapWindsTheYarnRoundItsGroupInFrontAndBehind) {
+  const Pattern p = run("cast_on(5)\nrow \"k\"\nrow \"p\"\nrow \"k1, wrap 3, k1\"\nrow \"p\"\n");
+  const auto g = knit_graph::build(p);
+  ASSERT_EQ(g.wraps.size(), 1u);
+  const auto& w = g.wraps[0];
+  EXPECT_EQ(w.course, 3);
+  EXPECT_EQ(w.last - w.first, 2);
+  EXPECT_EQ(w.turns, 2);
+  for (int i = w.first; i <= w.last; ++i) EXPECT_EQ(g.loops[static_cast<std::size_t>(i)].parents.size(), 1u);
+  const auto l = layout::lay_out(p, g);
+  const auto pieces = yarn_paths::trace(l, LoopModel::smooth);
+  ASSERT_EQ(pieces.size(), 1u);
+  const auto& piece = pieces[0];
+  // Row 3 is worked from the right: the group's leftmost loop is its last, then position 0.
+  const auto last = std::find(piece.loops.begin(), piece.loops.end(), w.first) - piece.loops.begin();
+  ASSERT_LT(static_cast<std::size_t>(last + 1), piece.loops.size());
+  const double left = at(l, 3, 1).data_points[0].x, right = at(l, 3, 3).data_points[16].x;
+  int front = 0, behind = 0;
+  for (std::size_t k = piece.loop_last[static_cast<std::size_t>(last)] + 1; k < piece.loop_first[static_cast<std::size_t>(last) + 1]; ++k) {
+    const glm::dvec3& q = piece.data_points[k];
+    EXPECT_GT(q.x, left - 0.2 * 4.0);
+    EXPECT_LT(q.x, right + 0.2 * 4.0);
+    EXPECT_GT(q.y, 3 * l.course_spacing);
+    if (q.z >= l.float_in_front - 1e-9) ++front;
+    if (q.z <= l.float_behind + 1e-9) ++behind;
+  }
+  EXPECT_GE(front, 2 * 3);  // each turn's pass in front spans the three loops
+  EXPECT_GE(behind, 2 * 3);
+}
+
 // With nothing slipped below it, a stitch worked under the loose strand is refused.
 TEST(YarnPathsOfFabrics, AStitchUnderNoFloatIsRefused) {
   const Pattern p = run("cast_on(3)\nrow \"k\"\nrow \"p\"\nrow \"k1, k under float, k1\"\n");

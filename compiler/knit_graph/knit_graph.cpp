@@ -162,6 +162,16 @@ Graph build(const Pattern& pattern) {
         children.push_back(0);
         return static_cast<int>(g.loops.size()) - 1;
       };
+      if (s.wraps > 0) {  // each stitch knitted, then the yarn wound round them all
+        const int first = static_cast<int>(g.loops.size());
+        for (int k = 0; k < s.consumes; ++k) {
+          next.push_back({new_loop(live[at + static_cast<std::size_t>(k)], false)});
+          next_loose.push_back(loose_over(at + static_cast<std::size_t>(k), 1));
+        }
+        g.wraps.push_back({number, first, static_cast<int>(g.loops.size()) - 1, op.yarn, s.wraps});
+        at += static_cast<std::size_t>(s.consumes);
+        continue;
+      }
       switch (s.family) {
         case StitchFamily::slip: {
           // Stitches slipped one after another ("sl3 wyif") leave one float across them all.

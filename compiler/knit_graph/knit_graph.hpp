@@ -14,6 +14,7 @@
 //   drop                           no new loop: the old stitch is let off the needle and its
 //                                  wale unravels down to the yarn over (or cast-on) it grew
 //                                  from, each loop of it left as a straight rung;
+//   wrap                           a new loop through each stitch, then the yarn wound round them;
 //   no stitch                      nothing.
 #pragma once
 
@@ -55,6 +56,15 @@ struct Float {
   int caught_by = -1;     // the loop worked under it that lifts it (quilting), or -1: index into Graph::loops
 };
 
+// Yarn wound round a group of stitches after they are worked (wrap 3): the loops
+// [first, last] (indices into Graph::loops, face order) of one course, `turns` times.
+struct Wrap {
+  int course = 0;
+  int first = 0, last = 0;
+  int yarn = 0;
+  int turns = 0;
+};
+
 // How many rows below a float can still be caught: a strand slipped further down is no
 // longer loose enough to lift (real patterns catch them 2 to 8 rows up).
 inline constexpr int float_reach = 10;
@@ -63,6 +73,7 @@ struct Graph {
   std::vector<Loop> loops;        // the cast-on's, then course by course in face order
   std::vector<int> course_first;  // index of each course's first loop; one more entry at the end
   std::vector<Float> floats;      // course by course
+  std::vector<Wrap> wraps;        // course by course
   std::vector<int> needle;        // live stitches after each course (the cast-on's first)
   // After the last course: the live stitches, each the loops its needle holds.
   std::vector<std::vector<int>> live;

@@ -142,6 +142,7 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
     out.direction.push_back(direction);
   }
   out.floats = graph.floats;
+  out.wraps = graph.wraps;
   return out;
 }
 
@@ -330,6 +331,17 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
   }
 }
 
+// A wrapped group's last worked loop no longer shares its sinker point with the next
+// loop: the yarn leaves it for the winding and comes back to the next, so its end is
+// drawn in 0.12 W from the group's edge.
+void part_wrapped_sinkers(Layout& out) {
+  for (const auto& w : out.wraps) {
+    const bool leftwards = out.direction[w.course] < 0;
+    Loop& last = out.loops[static_cast<std::size_t>(leftwards ? w.first : w.last)];
+    last.data_points[leftwards ? 0 : loop_points - 1].x += (leftwards ? 0.12 : -0.12) * out.loop_width;
+  }
+}
+
 // The depth of a loop's left leg (P0..P8) at height y, or its P2's if y is off the leg.
 double left_leg_z(const Loop& l, double y) {
   for (int k = 0; k + 1 <= loop_points / 2; ++k) {
@@ -379,6 +391,7 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
   place_templates(out, pattern, tucks_purled_off(out, parents));
   pull_through(out, pattern, parents, cable_leans(out, parents));
   lift_caught_floats(out, pattern, parents);
+  part_wrapped_sinkers(out);
   return out;
 }
 

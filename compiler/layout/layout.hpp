@@ -65,6 +65,7 @@ struct Layout {
   // Per float: the points (course-local, left to right) a caught float is lifted through,
   // under the legs of the loop that catches it and over its parent's head; empty if loose.
   std::vector<std::vector<glm::dvec3>> float_lifts;
+  std::vector<knit_graph::Wrap> wraps;  // yarn wound round groups of loops, course by course
   // The z of yarn floating behind and in front of the fabric: clear of the loops' legs.
   double float_behind = 0.0, float_in_front = 0.0;
 };

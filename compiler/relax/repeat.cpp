@@ -134,6 +134,7 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   // narrow their needle positions, so neither lies on the lattice: relaxed whole.
   for (const auto& f : layout.floats)
     if (f.caught_by >= 0) return std::nullopt;
+  if (!layout.wraps.empty()) return std::nullopt;  // a winding spans its group's loops
   for (const auto& edges : layout.slot_x)
     for (std::size_t k = 1; k < edges.size(); ++k)
       if (std::abs(edges[k] - edges[k - 1] - layout.loop_width) > 1e-9 * layout.loop_width) return std::nullopt;

@@ -76,6 +76,11 @@ constexpr StitchDef clustered(StitchDef d, double width) {
   return d;
 }
 
+constexpr StitchDef wrapping(StitchDef d, int turns) {
+  d.wraps = turns;
+  return d;
+}
+
 constexpr StitchDef catching(StitchDef d) {
   d.catches = true;
   return d;
@@ -120,6 +125,10 @@ constexpr auto more = std::to_array<StitchDef>({
     // stitches slipped rows below, catching them up.
     catching(plain("k under float", 1, 1, F::knit, Lean::none, "p under float")),
     catching(plain("p under float", 1, 1, F::purl, Lean::none, "k under float")),
+    // Wrapped stitches: k2 (3, 4), then the yarn wound twice round them.
+    wrapping(plain("wrap 2", 2, 2, F::knit, Lean::none, ""), 2),
+    wrapping(plain("wrap 3", 3, 3, F::knit, Lean::none, ""), 2),
+    wrapping(plain("wrap 4", 4, 4, F::knit, Lean::none, ""), 2),
 });
 
 // Crosses in the Stitch Maps notation n/m XX and n/c/n XX, generated: n stitches cross

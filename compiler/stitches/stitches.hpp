@@ -60,6 +60,9 @@ struct StitchDef {
   // A cluster (the nupp): its new loops share this many loop widths of needle positions
   // between them, bunched, where each loop would otherwise take one. 0: one each.
   double cluster_width = 0.0;
+  // A wrap (wrap 3): its stitches are each knitted, then the yarn is wound this many times
+  // round them all. 0: no winding.
+  int wraps = 0;
   // The stitch as it shows on the face when worked on a wrong-side row (k shows as p);
   // empty if it has no wrong-side form.
   std::string_view wrong_side_face;

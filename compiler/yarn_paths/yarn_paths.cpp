@@ -63,6 +63,32 @@ struct PieceBuilder {
     last_wale = loop.wale;
   }
 
+  // The yarn wound `turns` times round the loops [first, last] of a course after the last
+  // of them is worked, from the edge the yarn left them at: across in front, back behind,
+  // each turn a little higher up the loops' legs, ending beside that edge.
+  void wind(const knit_graph::Wrap& w) {
+    const double W = layout.loop_width, C = layout.course_spacing;
+    const double left = layout.loops[static_cast<std::size_t>(w.first)].data_points.front().x;
+    const double right = layout.loops[static_cast<std::size_t>(w.last)].data_points.back().x;
+    const double way = layout.direction[w.course] < 0 ? 1.0 : -1.0;  // from the exit edge across the group
+    const double near = way > 0 ? left : right, far = way > 0 ? right : left;
+    const double y0 = w.course * C;
+    const int across = std::max(1, static_cast<int>(std::lround((right - left) / (0.5 * W))));
+    auto pass = [&](double from, double to, double y, double z) {
+      for (int k = 0; k <= across; ++k) add({from + (to - from) * k / across, y, z}, w.course);
+    };
+    for (int t = 0; t < w.turns; ++t) {
+      const double y = y0 + (0.4 + 0.3 * t) * C;
+      // Out beside the group: toward the front on the way in, behind on the way back
+      // down, so that the two never cross at one depth.
+      add({near - way * 0.15 * W, y, t == 0 ? 0.4 * layout.float_in_front : 0.0}, w.course);
+      pass(near, far, y + 0.05 * C, layout.float_in_front);
+      add({far + way * 0.15 * W, y + 0.1 * C, 0.0}, w.course);
+      pass(far, near, y + 0.15 * C, layout.float_behind);
+    }
+    add({near - way * 0.15 * W, y0 + 0.25 * C, 0.4 * layout.float_behind}, w.course);
+  }
+
   // A short end of yarn behind the fabric, leaving `at` along x in direction `way`.
   std::vector<glm::dvec3> tail(const glm::dvec3& at, double way) const {
     const double W = layout.loop_width, C = layout.course_spacing, z = layout.float_behind;
@@ -91,6 +117,13 @@ std::vector<Piece> trace_smooth(const Layout& layout) {
   for (const layout::Loop& l : layout.loops) yarns = std::max(yarns, l.yarn + 1);
   std::vector<std::vector<int>> along(yarns);
   for (std::size_t i = 0; i < layout.loops.size(); ++i) along[layout.loops[i].yarn].push_back(static_cast<int>(i));
+  // The loop each winding follows along the yarn: its group's last worked, at the edge
+  // the course's work leaves it by.
+  std::vector<int> wrap_after(layout.loops.size(), -1);
+  for (std::size_t i = 0; i < layout.wraps.size(); ++i) {
+    const auto& w = layout.wraps[i];
+    wrap_after[static_cast<std::size_t>(layout.direction[w.course] < 0 ? w.first : w.last)] = static_cast<int>(i);
+  }
   std::vector<Piece> pieces;
   for (int y = 0; y < yarns; ++y) {
     auto& order = along[y];
@@ -161,6 +194,7 @@ std::vector<Piece> trace_smooth(const Layout& layout) {
         b.add(t[0], course);
       }
       b.add_loop(index);
+      if (wrap_after[static_cast<std::size_t>(index)] >= 0) b.wind(layout.wraps[static_cast<std::size_t>(wrap_after[static_cast<std::size_t>(index)])]);
     }
     finish();
   }

@@ -124,6 +124,12 @@ constexpr Entry entries[] = {
     {"p under float", {"p1 under float|p under floats|p1 under floats|p under loose strand|p1 under loose strand|p under loose strands|p1 under loose strands|p under the loose strand|p1 under the loose strand|p under strand|p1 under strand",
       "p_under", "p_under", false,
       "purl under the loose strands: the new loop catches every float lying over its stitch on the back; on a wrong-side row it shows as k under float"}},
+    {"wrap 2", {"w2|wrap2|wrap 2 sts|wrap next 2 sts", "wrap2", "wrap2", false,
+      "wrap 2: knit 2, slip them back, wind the yarn twice round them, slip them again: the two drawn together"}},
+    {"wrap 3", {"w3|wrap3|wrap 3 sts|wrap next 3 sts", "wrap3", "wrap3", false,
+      "wrap 3: knit 3, slip them back, wind the yarn twice round them, slip them again: the three drawn together"}},
+    {"wrap 4", {"w4|wrap4|wrap 4 sts|wrap next 4 sts", "wrap4", "wrap4", false,
+      "wrap 4: knit 4, slip them back, wind the yarn twice round them, slip them again: the four drawn together"}},
 };
 
 // A generated cross: its notation is its name; its symbol the name without the space.
