@@ -152,6 +152,54 @@ TEST(Charts, StitchesWithoutAWrongSideFormStayOnRightSideRows) {
   EXPECT_EQ(stitch(p.courses[1].ops[2].stitch).name, "C4F");
 }
 
+// Stitch markers: placed with pm, kept across rows between the same stitches, and the
+// room a part of a row works to ("k to m", "rep from * to 2 sts before m, ..."). The
+// rows are the whelk dishcloth's (tests/corpus/raw/gl_whelk_slip_stitch.txt), on the
+// 17 stitches of its multiple of 4 + 3 less the border's difference, worked by hand:
+// slipped stitches at 6 and 10 on row 1 (face view, from the left), 6 and 10 on row 2,
+// 4, 8 and 12 on rows 3 and 4.
+TEST(Markers, RowsWorkToTheMarkersTheRowsBeforePlaced) {
+  const Pattern p = run("cast_on(17)\n"
+                        "row \"K3, pm; K3, * sl 1 wyib, K3; rep from * to last 3 stitches; pm, K to end.\"\n"
+                        "row \"K to marker; K3, * sl 1 wyif, K3; rep from * to marker; K to end.\"\n"
+                        "row \"K to marker; K1, * sl 1 wyib, K3; rep from * to 2 stitches before marker, sl 1 wyib, K1;  K to end.\"\n"
+                        "row \"K to marker; P1, sl 1 wyif, * P3, sl 1 wyif; rep from * to last stitch before marker, P1; K to end.\"\n"
+                        "row \"k to m, sm, p to m, sm, k to end\"\n",
+                        true);
+  ASSERT_EQ(p.courses.size(), 5u);
+  auto slipped = [&](std::size_t row) {
+    std::vector<int> at;
+    for (std::size_t i = 0; i < p.courses[row].ops.size(); ++i)
+      if (stitch(p.courses[row].ops[i].stitch).family == StitchFamily::slip) at.push_back(static_cast<int>(i));
+    return at;
+  };
+  EXPECT_EQ(slipped(0), (std::vector<int>{6, 10}));
+  EXPECT_EQ(slipped(1), (std::vector<int>{6, 10}));
+  EXPECT_EQ(slipped(2), (std::vector<int>{4, 8, 12}));
+  EXPECT_EQ(slipped(3), (std::vector<int>{4, 8, 12}));
+  EXPECT_EQ(face(p.courses[4]), "k k k p p p p p p p p p p p k k k");
+}
+
+TEST(Markers, AMarkerNotWhereTheRowSaysIsRefused) {
+  auto error = [](const std::string& body) {
+    try {
+      run("cast_on(10)\n" + body, true);
+    } catch (const runtime::PatternError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error("row \"k to m, k to end\"\n"),
+            "t.lua:3: row 1 \"k to m, k to end\" works to a marker, but no marker lies ahead on the needle; place one "
+            "with pm on an earlier row");
+  EXPECT_EQ(error("row \"k3, pm, k to end\"\nrow \"p2, sm, p to end\"\n"),
+            "t.lua:4: row 2 \"p2, sm, p to end\" works 2 stitches before a marker 7 stitches on; make them agree");
+  // Markers stay between the same stitches: two decreases worked before one on a
+  // right-side row leave it where it was, counted from the left edge.
+  EXPECT_EQ(error("row \"k5, pm, k to end\"\nrow \"p\"\nrow \"k2tog, k2tog, k to end\"\nrow \"p5, sm, p to end\"\n"),
+            "no error");
+}
+
 TEST(ChartText, NumbersEachRowOnTheSideItIsReadFrom) {
   const Pattern p = run("cast_on(4)\nrow \"k2, p2\"\nrow \"k1, p1\"\nrow \"k2tog, yo, k2\"\n", true);
   EXPECT_EQ(language::chart_text(p),

@@ -23,6 +23,25 @@ std::vector<bool> faces_after(const Course& c, const std::vector<bool>& below) {
   return out;
 }
 
+// Where each marker lies after a course: between the same stitches, the stitches made
+// before it counted; one inside a stitch that works across it (k2tog over a marker)
+// moves to after that stitch.
+std::vector<int> markers_after(const Course& c, const std::vector<int>& markers) {
+  std::vector<int> out;
+  for (int gap : markers) {
+    int taken = 0, made = 0;
+    for (const Op& op : c.ops) {
+      if (taken >= gap) break;
+      taken += stitch(op.stitch).consumes;
+      made += stitch(op.stitch).produces;
+    }
+    out.push_back(made);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 }  // namespace
 
 Work::Work(Pattern declared, Limits limits) : pattern_(std::move(declared)), limits_(limits) {
@@ -88,9 +107,17 @@ std::optional<std::string> Work::work_text(const RowText& text, std::string_view
     }
     return add(std::move(ops), where);
   }
-  auto worked = work_row(text, source, live_, row);
-  if (auto* e = std::get_if<TextError>(&worked)) return e->message;
-  std::vector<Worked>& stitches = std::get<std::vector<Worked>>(worked);
+  MarkedRow marked;
+  if (!text.parts.empty()) {
+    auto parts = work_parts(text, source, row);
+    if (auto* e = std::get_if<std::string>(&parts)) return *e;
+    marked = std::move(std::get<MarkedRow>(parts));
+  } else {
+    auto worked = work_row(text, source, live_, row);
+    if (auto* e = std::get_if<TextError>(&worked)) return e->message;
+    marked.stitches = std::move(std::get<std::vector<Worked>>(worked));
+  }
+  std::vector<Worked>& stitches = marked.stitches;
   for (std::size_t i = 0; i < stitches.size(); ++i) {
     Worked& w = stitches[i];
     if (!w.edge) continue;
@@ -105,7 +132,92 @@ std::optional<std::string> Work::work_text(const RowText& text, std::string_view
   }
   auto ops = face_view(stitches, side_of(row), yarn_);
   if (auto* e = std::get_if<TextError>(&ops)) return "row " + std::to_string(row) + " " + quote_row(source) + " is a wrong-side row: " + e->message;
-  return add(std::move(std::get<std::vector<Op>>(ops)), where);
+  const std::vector<int> before = markers_;
+  for (int gap : marked.removed) markers_.erase(std::remove(markers_.begin(), markers_.end(), gap), markers_.end());
+  if (auto e = add(std::move(std::get<std::vector<Op>>(ops)), where)) {
+    markers_ = before;
+    return e;
+  }
+  // The markers placed: after so many of the row's stitches in working order, so many
+  // stitches made; a right-side row works from the right edge.
+  for (std::size_t after : marked.placed) {
+    int made = 0;
+    for (std::size_t i = 0; i < after; ++i) made += stitch(stitches[i].stitch).produces;
+    markers_.push_back(side_of(row) == Side::right ? live_ - made : made);
+  }
+  std::sort(markers_.begin(), markers_.end());
+  markers_.erase(std::unique(markers_.begin(), markers_.end()), markers_.end());
+  return std::nullopt;
+}
+
+std::variant<Work::MarkedRow, std::string> Work::work_parts(const RowText& text, std::string_view source, int row) const {
+  const bool leftwards = side_of(row) == Side::right;  // worked from the right edge
+  // The markers in the row's working order: how many live stitches lie before each.
+  std::vector<int> ahead;
+  for (int gap : markers_) ahead.push_back(leftwards ? live_ - gap : gap);
+  std::sort(ahead.begin(), ahead.end());
+  auto to_face = [&](int worked) { return leftwards ? live_ - worked : worked; };
+  const std::string name = "row " + std::to_string(row) + " " + quote_row(source);
+  MarkedRow out;
+  int at = 0;  // live stitches worked so far
+  for (const MarkedPart& part : text.parts) {
+    const RowText& t = part.text;
+    // The marker this part works to: the next after where it starts ("k to m" just after
+    // a marker means the one after it); a slip or a removal takes one right there too.
+    const bool here = part.end == MarkerEnd::slip || part.end == MarkerEnd::remove;
+    const auto next = std::find_if(ahead.begin(), ahead.end(), [&](int m) { return here ? m >= at : m > at; });
+    const bool marked = next != ahead.end();
+    const bool repeats = t.star.has_value();
+    int room = 0;
+    switch (part.end) {
+      case MarkerEnd::row_end: room = live_ - at; break;
+      case MarkerEnd::place: room = repeats ? (marked ? *next : live_) - at : 0; break;
+      default:
+        if (!marked)
+          return name + (part.end == MarkerEnd::slip || part.end == MarkerEnd::remove ? " slips or removes a marker"
+                                                                                      : " works to a marker") +
+                 ", but no marker lies ahead " + (at == 0 ? "" : "after " + std::to_string(at) + " stitches ") +
+                 "on the needle; place one with pm on an earlier row";
+        room = *next - at - (part.end == MarkerEnd::before_marker ? part.before : 0);
+        if (room < 0)
+          return name + " works to " + std::to_string(part.before) + " stitches before a marker only " +
+                 std::to_string(*next - at) + " stitches on";
+        break;
+    }
+    // "*k3; rep from * to last 3 sts, pm, k to end": what its own closing stitches leave
+    // of those is the rest's, past the marker it places.
+    if (repeats && t.to_last && part.end == MarkerEnd::place) {
+      RowText closing;
+      closing.before = t.after;
+      auto c = work_once(closing, source, row);
+      if (auto* e = std::get_if<TextError>(&c)) return e->message;
+      room -= std::max(0, *t.to_last - consumed(std::get<std::vector<Worked>>(c)));
+    }
+    std::vector<Worked> worked;
+    if (repeats) {
+      RowText filled = t;
+      if (part.end == MarkerEnd::place) filled.to_last.reset();  // the room says it now
+      auto w = work_row(filled, source, room, row);
+      if (auto* e = std::get_if<TextError>(&w)) return e->message;
+      worked = std::move(std::get<std::vector<Worked>>(w));
+    } else if (!t.before.empty()) {
+      // Fixed stitches: before a marker placed or slipped, worked once, and they must
+      // reach it; to the row's end, repeated across as any row without a repeat is.
+      auto w = part.end == MarkerEnd::row_end ? work_row(t, source, room, row) : work_once(t, source, row);
+      if (auto* e = std::get_if<TextError>(&w)) return e->message;
+      worked = std::move(std::get<std::vector<Worked>>(w));
+    }
+    if (part.end != MarkerEnd::place && part.end != MarkerEnd::row_end && consumed(worked) != room)
+      return name + " works " + std::to_string(consumed(worked)) + " stitches before a marker " + std::to_string(room) +
+             " stitches on; make them agree";
+    out.stitches.insert(out.stitches.end(), worked.begin(), worked.end());
+    at += consumed(worked);
+    if (part.end == MarkerEnd::place) out.placed.push_back(out.stitches.size());
+    if (part.end == MarkerEnd::remove) out.removed.push_back(to_face(at));
+  }
+  if (at != live_)
+    return name + " works " + std::to_string(at) + " stitches but " + std::to_string(live_) + " are live";
+  return out;
 }
 
 std::optional<std::string> Work::add(std::vector<Op> ops, const SourceLocation& where) {
@@ -127,6 +239,7 @@ std::optional<std::string> Work::add(std::vector<Op> ops, const SourceLocation& 
   loops_ += live;
   live_ = live;
   purl_faced_ = faces_after(c, purl_faced_);
+  markers_ = markers_after(c, markers_);
   pattern_.courses.push_back(std::move(c));
   return std::nullopt;
 }
@@ -150,7 +263,7 @@ std::size_t Work::cost(std::size_t stitches, const SourceLocation& where) const 
 
 Work::Mark Work::mark() const {
   return {pattern_.courses.size(), live_, yarn_, pattern_.cast_on, pattern_.cast_on_yarn, cast_on_line_, bind_off_line_,
-          loops_, pattern_.bound_off, wrong_side_first_, purl_faced_};
+          loops_, pattern_.bound_off, wrong_side_first_, purl_faced_, markers_};
 }
 
 void Work::restore(const Mark& m) {
@@ -165,6 +278,7 @@ void Work::restore(const Mark& m) {
   pattern_.bound_off = m.bound_off;
   wrong_side_first_ = m.wrong_side_first;
   purl_faced_ = m.purl_faced;
+  markers_ = m.markers;
 }
 
 }  // namespace knitc::language

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <optional>
+#include <variant>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -52,6 +53,7 @@ class Work {
   std::optional<std::string> start_on_wrong_side();
   // Why no row can be worked now ("no live stitches ..."), or nothing.
   std::optional<std::string> no_live_stitches() const;
+  const std::vector<int>& markers() const { return markers_; }
   // Works written instructions (parsed from `source`) across the live stitches in the
   // current yarn as the next row, from `where`.
   std::optional<std::string> work_text(const RowText& text, std::string_view source, const SourceLocation& where);
@@ -72,6 +74,7 @@ class Work {
     long long loops = 0;
     bool bound_off = false, wrong_side_first = false;
     std::vector<bool> purl_faced;
+    std::vector<int> markers;
   };
   Mark mark() const;
   void restore(const Mark& m);
@@ -86,6 +89,19 @@ class Work {
   bool wrong_side_first_ = false;
   Selvedge selvedge_ = Selvedge::garter;
   std::vector<bool> purl_faced_;  // per live stitch, face order: shows as a purl on the face
+  // Stitch markers on the needle, as face-view gaps: k is between live stitches k - 1 and
+  // k. Every course carries them along; rows place, slip and remove them.
+  std::vector<int> markers_;
+
+  // A row with markers, part by part, in working order: its stitches, the markers it
+  // places (gaps in the row's working order after it) and those it removes (face-view
+  // gaps before it).
+  struct MarkedRow {
+    std::vector<Worked> stitches;
+    std::vector<std::size_t> placed;  // after how many of the stitches
+    std::vector<int> removed;
+  };
+  std::variant<MarkedRow, std::string> work_parts(const RowText& text, std::string_view source, int row) const;
 };
 
 }  // namespace knitc::language

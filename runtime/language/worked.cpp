@@ -72,6 +72,14 @@ std::optional<std::size_t> last_repeat_cut(std::span<const Worked> star, std::sp
 
 }  // namespace
 
+std::variant<std::vector<Worked>, TextError> work_once(const RowText& text, std::string_view source, int row) {
+  const std::size_t limit = static_cast<std::size_t>(max_count) * 3;  // as work_row's
+  std::vector<Worked> out;
+  flatten(text.before, out, limit);
+  if (out.size() > limit) return TextError{"row " + std::to_string(row) + " " + quote_row(source) + " is longer than any row can be"};
+  return out;
+}
+
 std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::string_view source, int live, int row) {
   // A row can never need more stitches than the limit of live ones; stop flattening there.
   const std::size_t limit = static_cast<std::size_t>(max_count) * 3;

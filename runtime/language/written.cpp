@@ -621,6 +621,29 @@ std::variant<RowText, TextError> parse_row(std::string_view text, std::span<cons
   if (text.size() > max_row_text_bytes)
     return TextError{"the row's text is " + std::to_string(text.size() >> 10) + " KiB; a row is at most " +
                      std::to_string(max_row_text_bytes >> 10) + " KiB of instructions"};
+  if (auto split = split_at_markers(text)) {
+    RowText row;
+    for (MarkedText& m : *split) {
+      MarkedPart part{{}, m.end, m.before};
+      if (m.text.find_first_not_of(" \t") != std::string::npos) {
+        auto parsed = Parser(m.text, yarn_ids, hints).row();
+        if (auto* e = std::get_if<TextError>(&parsed)) return *e;
+        part.text = std::move(std::get<RowText>(parsed));
+      }
+      if (part.text.side) {
+        if (!row.parts.empty()) return TextError{"\"(RS)\" or \"(WS)\" belongs at the start of a row"};
+        row.side = part.text.side;
+        part.text.side.reset();
+      }
+      if (part.text.as_they_appear)
+        return TextError{"stitches worked as they appear are not read between stitch markers yet; give the stitches"};
+      row.parts.push_back(std::move(part));
+    }
+    if (std::all_of(row.parts.begin(), row.parts.end(),
+                    [](const MarkedPart& p) { return p.text.before.empty() && !p.text.star && p.text.after.empty(); }))
+      return TextError{"the row places, slips or works to markers but gives no stitches"};
+    return row;
+  }
   return Parser(text, yarn_ids, hints).row();
 }
 

@@ -13,6 +13,7 @@
 //   knit the knit sts and purl the purl sts  every stitch as it shows
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -53,6 +54,15 @@ struct Element {
   bool is_group = false;
 };
 
+struct RowText;
+
+// Where a part of a row with stitch markers ends: the row's end; a marker placed (pm),
+// slipped (sm) or removed (rm) there; the next marker ("k to m"); or `before` stitches
+// before it ("rep from * to 2 sts before m, k2"). See split_at_markers.
+enum class MarkerEnd : std::uint8_t { row_end, place, slip, remove, to_marker, before_marker };
+
+struct MarkedPart;
+
 struct RowText {
   Sequence before;              // everything, when there is no *repeat
   std::optional<Sequence> star; // *...; rep from *, or "(p2, k2) to 3 sts before end"
@@ -64,6 +74,15 @@ struct RowText {
   bool opposite = false;
   // "(WS) k2, p2": the side the row says it is worked from, printed before its stitches.
   std::optional<Side> side;
+  // A row that places, slips or works to stitch markers: its parts in working order, each
+  // worked across the stitches up to where it ends (the rest of this RowText is empty).
+  std::vector<MarkedPart> parts;
+};
+
+struct MarkedPart {
+  RowText text;
+  MarkerEnd end = MarkerEnd::row_end;
+  int before = 0;  // for before_marker: the stitches left before the marker
 };
 
 // Spellings of an edge stitch ("edge st", "selvedge st", "sel st", "sel s") and of
@@ -79,12 +98,26 @@ bool is_marker(std::string_view spelled);
 inline constexpr std::size_t max_row_text_bytes = 1u << 20;
 std::variant<RowText, TextError> parse_row(std::string_view text, std::span<const std::string> yarn_ids, bool hints = true);
 
+// A row's text cut at its stitch markers, when it has any, each part's words as the row
+// parser reads them ("k to m" and "to 2 sts before m" as "to end": the work gives the
+// part its room); nothing for a row without markers. Marker words inside brackets are
+// not cut at.
+struct MarkedText {
+  std::string text;
+  MarkerEnd end = MarkerEnd::row_end;
+  int before = 0;
+};
+std::optional<std::vector<MarkedText>> split_at_markers(std::string_view text);
+
 // Works a parsed row across `live` stitches, in working order: a text without a repeat
 // is repeated until the stitches are used; a *repeat fills what the fixed stitches leave.
 // A text worked as its stitches appear is an error here: the caller knows how they show.
 // `row` is the row's number, for messages.
 std::variant<std::vector<Worked>, TextError> work_row(const RowText& text, std::string_view source, int live, int row);
 
+
+// The stitches of a text without a *repeat, worked once (a part of a row up to a marker).
+std::variant<std::vector<Worked>, TextError> work_once(const RowText& text, std::string_view source, int row);
 
 // A row's text in quotes for messages, shortened past 60 characters.
 std::string quote_row(std::string_view text);

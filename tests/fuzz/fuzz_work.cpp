@@ -32,11 +32,12 @@ void check(bool ok, const char* what) {
 struct State {
   Pattern pattern;
   int live, yarn, next_row, cast_on_line, bind_off_line;
+  std::vector<int> markers;
   bool operator==(const State&) const = default;
 };
 
 State state_of(const Work& w) {
-  return {w.pattern(), w.live(), w.yarn(), w.next_row(), w.cast_on_line(), w.bind_off_line()};
+  return {w.pattern(), w.live(), w.yarn(), w.next_row(), w.cast_on_line(), w.bind_off_line(), w.markers()};
 }
 
 void check_fabric(const Work& w) {
@@ -52,7 +53,8 @@ void check_fabric(const Work& w) {
 
 const char* const texts[] = {"k", "p", "k2, p2", "k2tog", "yo, k2tog", "*k1, p1; rep from *", "k to end", "m1, k",
                              "kfb", "sl1 wyif, k1", "C4F", "k1, (p1, k1) x3", "p2tog, p", "knit the knit sts and purl the purl sts",
-                             "k2 B", "cdd", "ssk, k, k2tog", "k1 tbl", "2/2 RC", "k3tog"};
+                             "k2 B", "cdd", "ssk, k, k2tog", "k1 tbl", "2/2 RC", "k3tog", "k3, pm, k to end",
+                             "k to m, sm, p to end", "p to 2 sts before m, k2, rm, k to end", "*k1, p1; rep from * to m, pm, k"};
 
 }  // namespace
 

@@ -77,6 +77,19 @@ void run(std::string_view text, int live) {
     return;
   }
   const RowText& row = std::get<RowText>(parsed);
+  if (!row.parts.empty()) {  // cut at stitch markers: the work gives each part its room
+    check(row.before.empty() && !row.star && row.after.empty(), "a row cut at markers also lists stitches of its own");
+    bool stitches = false;
+    for (const MarkedPart& part : row.parts) {
+      check(part.text.parts.empty(), "a part of a row has parts of its own");
+      check_sequence(part.text.before, yarns, 0);
+      if (part.text.star) check_sequence(*part.text.star, yarns, 0);
+      check_sequence(part.text.after, yarns, 0);
+      stitches = stitches || !part.text.before.empty() || part.text.star || !part.text.after.empty();
+    }
+    check(stitches, "a row of markers only was accepted");
+    return;
+  }
   check_sequence(row.before, yarns, 0);
   if (row.star) {
     check(!row.star->empty(), "an empty *repeat was accepted");
