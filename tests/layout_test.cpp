@@ -206,6 +206,33 @@ TEST(YarnPathsOfFabrics, AWrapWindsTheYarnRoundItsGroupInFrontAndBehind) {
   EXPECT_GE(behind, 2 * 3);
 }
 
+// Bound off at the start of a row: the three are knitted and passed over, lying over
+// toward the next (the bind-off template), off the needle; the stitches left stay over
+// the loops they were pulled through, and so do the next row's, at the other edge.
+TEST(Templates, StitchesBoundOffInARowLeaveTheRestInPlace) {
+  const Pattern p = run("cast_on(8)\nrow \"k\"\nrow \"p\"\nrow \"BO 3 sts, k to end\"\nrow \"BO 2 sts, p to end\"\nrow \"k\"\n");
+  const auto g = knit_graph::build(p);
+  EXPECT_EQ(g.needle, (std::vector<int>{8, 8, 8, 5, 3, 3}));
+  EXPECT_EQ(g.columns, (std::vector<int>{8, 8, 8, 8, 5, 3}));
+  int bound = 0;
+  for (const auto& k : g.loops) bound += k.bound;
+  EXPECT_EQ(bound, 5);
+  const auto l = layout::lay_out(p, g);
+  for (std::size_t i = 0; i < g.loops.size(); ++i) {
+    const auto& k = g.loops[i];
+    if (k.course < 3 || k.parents.size() != 1) continue;
+    const auto& parent = l.loops[static_cast<std::size_t>(k.parents.front())];
+    const auto& loop = l.loops[i];
+    EXPECT_NEAR(loop.data_points[0].x, parent.data_points[0].x, 1e-9) << "course " << k.course << " column " << k.slot;
+    if (k.bound) {
+      EXPECT_EQ(loop.shape, layout::Template::bind_off);
+    }
+  }
+  // Row 3 is worked from the right: its bound stitches are the rightmost three.
+  EXPECT_TRUE(g.loops[static_cast<std::size_t>(g.course_first[3] + 7)].bound);
+  EXPECT_FALSE(g.loops[static_cast<std::size_t>(g.course_first[3] + 4)].bound);
+}
+
 // With nothing slipped below it, a stitch worked under the loose strand is refused.
 TEST(YarnPathsOfFabrics, AStitchUnderNoFloatIsRefused) {
   const Pattern p = run("cast_on(3)\nrow \"k\"\nrow \"p\"\nrow \"k1, k under float, k1\"\n");

@@ -73,10 +73,13 @@ const std::map<std::string, std::string> refused = {
     {"us_kaitlins_reversible_cable_scarf", ":14: row 1 \"* K2,P2* 11 times,P1, Slip 1 with yarn in front\" uses 46"},  // cast on 24
     {"vintage_fireside_slippers_rib", ":15: row 2 "},    // 4 + 5n + 4 does not make row 1's 4 + 5n + 6
     {"us_walker_open_bobble_ocr", ":24: repeats row 1"},  // OCR: "Rows I, 3, and 5"
-    // Stitches knitc has no topology for yet: bind-offs inside a row, dropped stitches,
-    // bobbles, clusters, stitches worked into one, caught floats.
-    {"sm_loop_edging", ":13: row 4 \"BO to last 10 sts"},
-    {"sm_two_pretty_fringes", ":12: row 3 \"BO 3 sts, *drop st"},
+    // "BO to last 10 sts, k3, ..." counts the stitch left on the needle after the bind-off
+    // as one more (11); knitc binds off all but the last 10 there (a counted "BO 3 sts"
+    // keeps it). The fringe unravels its dropped stitches through the rows of p2tog
+    // and then repeats rows 1-2 on the one stitch left.
+    {"sm_loop_edging", ":13: row 4 of the text says it leaves 11 sts but its stitches leave 10"},
+    {"sm_two_pretty_fringes", ":13: the repeat of row 1 of the text is printed as a right-side row"},
+    // Stitches knitc has no topology for yet: bobbles, clusters, stitches worked into one.
     {"sm_nasturtium_edging_v2", "unknown stitch '1-to-5 inc'"},
     {"sm_railroad_tracks", ":11: row 2 "},  // "bunny ears back dec" on row 3; the stated multiple is row 2's count
     {"gl_mb_cable_cowl_rounds", "uses 'MB', which line 12 defines as"},

@@ -111,6 +111,7 @@ Graph build(const Pattern& pattern) {
   // Per live stitch: the floats lying over it not yet caught, from the last float_reach rows.
   std::vector<std::vector<int>> loose(live.size());
   g.needle.push_back(pattern.cast_on);
+  g.columns.push_back(pattern.cast_on);
   std::vector<int> yarn_order(pattern.yarns.size(), 0);
   for (int y = 0; y < static_cast<int>(pattern.yarns.size()); ++y) {
     if (y == pattern.cast_on_yarn) yarn_order[y] = pattern.cast_on;
@@ -146,13 +147,14 @@ Graph build(const Pattern& pattern) {
     const std::size_t first_loop = g.loops.size();
     std::size_t at = 0;  // next live stitch, face order
     int position = 0;
+    int bound = 0;  // stitches bound off so far in the course: columns without a needle
     for (const Op& op : course.ops) {
       const StitchDef& s = stitch(op.stitch);
       auto new_loop = [&](std::vector<int> parents, bool held) {
         Loop l;
         l.course = number;
         l.position = position++;
-        l.slot = static_cast<int>(next.size());
+        l.slot = static_cast<int>(next.size()) + bound;
         l.stitch = op.stitch;
         l.yarn = op.yarn;
         l.parents = std::move(parents);
@@ -176,7 +178,7 @@ Graph build(const Pattern& pattern) {
         case StitchFamily::slip: {
           // Stitches slipped one after another ("sl3 wyif") leave one float across them all.
           const bool in_front = op.stitch == stitch_id("sl wyif");
-          const int first = static_cast<int>(next.size());
+          const int first = static_cast<int>(next.size()) + bound;
           if (!g.floats.empty() && g.floats.back().course == number && g.floats.back().yarn == op.yarn &&
               g.floats.back().in_front == in_front && g.floats.back().last + 1 == first)
             g.floats.back().last = first + s.consumes - 1;
@@ -199,6 +201,10 @@ Graph build(const Pattern& pattern) {
           break;
         case StitchFamily::no_stitch: break;
         case StitchFamily::drop: unravel(g, children, live[at], number); break;
+        case StitchFamily::bind_off:
+          g.loops[static_cast<std::size_t>(new_loop(live[at], false))].bound = true;
+          ++bound;
+          break;
         case StitchFamily::cable:
           for (int j = 0; j < s.produces; ++j) {
             const int made = new_loop(live[at + cable_source(s, j)], false);
@@ -230,6 +236,7 @@ Graph build(const Pattern& pattern) {
       l.order = yarn_order[l.yarn]++;
     }
     g.needle.push_back(static_cast<int>(next.size()));
+    g.columns.push_back(static_cast<int>(next.size()) + bound);
     live = std::move(next);
     loose = std::move(next_loose);
   }

@@ -15,6 +15,7 @@
 //                                  wale unravels down to the yarn over (or cast-on) it grew
 //                                  from, each loop of it left as a straight rung;
 //   wrap                           a new loop through each stitch, then the yarn wound round them;
+//   bind off (bo)                  a new loop through it, off the needle: bound, a column of its own;
 //   no stitch                      nothing.
 #pragma once
 
@@ -37,13 +38,17 @@ class RowError : public std::invalid_argument {
 struct Loop {
   int course = 0;         // 0 is the cast-on; pattern course i is course i + 1
   int position = 0;       // left to right in face view among the loops its course makes
-  int slot = 0;           // the needle position it is on after its course, left to right in face view
+  // Its column in its course, left to right in face view: the needle position it is on
+  // after its course, counting the stitches the course binds off (they stand where they
+  // were knitted) among them.
+  int slot = 0;
   StitchId stitch = 0;    // the op that made it (the cast-on's loops say k)
   int yarn = 0;           // index into Pattern::yarns
   int order = 0;          // place along its yarn, in working order, from 0
   std::vector<int> parents;  // loops it is pulled through, in face order: indices into Graph::loops
   bool held = false;         // a tuck loop: caught on the needle, knitted off with the next loop
   bool unravelled = false;   // let off by a drop: no parents, no children, a rung across its wale
+  bool bound = false;        // bound off within its course: passed over the next, off the needle
 };
 
 // A stretch of yarn that passes stitches by without making a loop: a slipped stitch's
@@ -75,6 +80,7 @@ struct Graph {
   std::vector<Float> floats;      // course by course
   std::vector<Wrap> wraps;        // course by course
   std::vector<int> needle;        // live stitches after each course (the cast-on's first)
+  std::vector<int> columns;       // each course's columns: its live stitches and those it bound off
   // After the last course: the live stitches, each the loops its needle holds.
   std::vector<std::vector<int>> live;
 };

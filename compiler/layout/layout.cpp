@@ -114,17 +114,50 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
   out.course_spacing = g.course_spacing();
   out.float_behind = -(0.3 * T + 0.6 * thickest);
   out.float_in_front = T + 0.6 * thickest;
-  out.needle = graph.needle;
+  out.needle = graph.columns;
   if (bind_off) out.needle.push_back(static_cast<int>(graph.live.size()));
   out.courses = static_cast<int>(out.needle.size());
   out.wales = out.needle.empty() ? 0 : *std::max_element(out.needle.begin(), out.needle.end());
   const auto widths = slot_widths(out, graph);
-  double widest = 0.0;
-  for (const auto& w : widths) widest = std::max(widest, std::accumulate(w.begin(), w.end(), 0.0));
+  // Per course, the plain loops (knit or purl through one loop of the course below) and
+  // their parents' columns: what lines a course up over the one below.
+  std::vector<std::vector<std::pair<int, int>>> plain(static_cast<std::size_t>(out.courses));  // (column, parent's column)
+  for (const knit_graph::Loop& k : graph.loops) {
+    if (k.course == 0 || k.parents.size() != 1 || k.held || stitch(k.stitch).family == StitchFamily::cable) continue;
+    const knit_graph::Loop& parent = graph.loops[static_cast<std::size_t>(k.parents.front())];
+    if (parent.course == k.course - 1) plain[k.course].push_back({k.slot, parent.slot});
+  }
+  if (bind_off)
+    for (std::size_t s = 0; s < graph.live.size(); ++s)
+      if (graph.live[s].size() == 1) plain.back().push_back({static_cast<int>(s), graph.loops[graph.live[s].front()].slot});
   for (int c = 0; c < out.courses; ++c) {
-    // Flat work is centred on the widest course; a tube starts each round at angle zero.
     const double width = std::accumulate(widths[c].begin(), widths[c].end(), 0.0);
-    out.origin_x.push_back(pattern.knitting == Knitting::flat ? 0.5 * (widest - width) : 0.0);
+    // A tube starts each round at angle zero. Flat work: each course where its plain
+    // loops lie over their parents (the median of their offsets), so that stitches bound
+    // off or decreased at one edge leave the rest in place; with none, centred over the
+    // course below.
+    double origin = 0.0;
+    if (pattern.knitting == Knitting::flat && c > 0) {
+      const double below = out.origin_x[c - 1], below_width = out.slot_x[c - 1].back() - below;
+      origin = below + 0.5 * (below_width - width);
+      if (!plain[c].empty()) {
+        std::vector<double> offsets;
+        double at = 0.0;
+        bool uniform = true;  // whole widths multiplied, as the edges below are
+        std::vector<double> centre(widths[c].size());  // relative to the course's origin
+        for (std::size_t k = 0; k < widths[c].size(); ++k) {
+          uniform = uniform && widths[c][k] == W;
+          centre[k] = uniform ? (static_cast<double>(k) + 0.5) * W : at + 0.5 * widths[c][k];
+          at += widths[c][k];
+        }
+        for (const auto& [column, parent] : plain[c])
+          offsets.push_back(centre_x(out, c - 1, parent) - centre[static_cast<std::size_t>(column)]);
+        std::sort(offsets.begin(), offsets.end());
+        const std::size_t n = offsets.size();
+        origin = n % 2 ? offsets[n / 2] : 0.5 * (offsets[n / 2 - 1] + offsets[n / 2]);
+      }
+    }
+    out.origin_x.push_back(origin);
     std::vector<double>& edges = out.slot_x.emplace_back(1, out.origin_x.back());
     // Up to the first cluster, whole loop widths by multiplying (not summing), so that a
     // fabric without clusters keeps the very same coordinates.
@@ -159,6 +192,7 @@ void take_loops(Layout& out, const knit_graph::Graph& graph) {
     l.order = k.order;
     const StitchDef& s = stitch(k.stitch);
     if (k.unravelled) l.shape = Template::rung;
+    else if (k.bound) l.shape = Template::bind_off;
     else if (k.held) l.shape = Template::tuck;
     else if (purled(s)) l.shape = Template::purl;
     else if (s.family == StitchFamily::cable && s.cable.purl_background) {

@@ -39,7 +39,7 @@ enum class Template : std::uint8_t {
 
 struct Loop {
   int course = 0;  // 0 is the cast-on; pattern course i is course i + 1; a bind-off is one more
-  int wale = 0;    // needle position after its course, left to right in face view
+  int wale = 0;    // needle position after its course (or column it was bound off in), left to right in face view
   StitchId stitch = 0;
   int yarn = 0;    // index into Pattern::yarns
   int order = 0;   // place along its yarn, in working order
@@ -54,8 +54,8 @@ struct Layout {
   Knitting knitting = Knitting::flat;
   double loop_width = 0.0, course_spacing = 0.0;
   std::vector<Loop> loops;        // course by course, left to right within a course
-  std::vector<int> needle;        // needle positions per course
-  std::vector<double> origin_x;   // x of needle position 0 per course (flat work is centred)
+  std::vector<int> needle;        // needle positions per course, and the columns of stitches it bound off
+  std::vector<double> origin_x;   // x of needle position 0 per course (flat work: its plain loops over their parents)
   // Per course: the x of each needle position's left edge, and of the last one's right
   // edge (needle + 1 values from origin_x). A position is one loop width, a cluster's
   // loops (the nupp's) narrower.

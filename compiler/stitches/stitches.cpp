@@ -129,6 +129,9 @@ constexpr auto more = std::to_array<StitchDef>({
     wrapping(plain("wrap 2", 2, 2, F::knit, Lean::none, ""), 2),
     wrapping(plain("wrap 3", 3, 3, F::knit, Lean::none, ""), 2),
     wrapping(plain("wrap 4", 4, 4, F::knit, Lean::none, ""), 2),
+    // Bound off within a row ("BO 3 sts, k to end"): knitted, and the stitch before it
+    // passed over, so each lies over the next and none stays on the needle.
+    plain("bo", 1, 0, F::bind_off, Lean::none, "bo"),
 });
 
 // Crosses in the Stitch Maps notation n/m XX and n/c/n XX, generated: n stitches cross

@@ -26,6 +26,7 @@ enum class StitchFamily : std::uint8_t {
   increase,   // one old loop worked several times (kfb, ctr dbl inc): every new loop through it
   no_stitch,  // a chart's grey square: a placeholder, no loop
   drop,       // the old loop let off the needle: its wale unravels down to a yarn over
+  bind_off,   // knitted and passed over the next: a loop that stays off the needle
 };
 
 enum class Lean : std::uint8_t { none, left, right, centre };

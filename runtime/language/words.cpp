@@ -130,6 +130,8 @@ constexpr Entry entries[] = {
       "wrap 3: knit 3, slip them back, wind the yarn twice round them, slip them again: the three drawn together"}},
     {"wrap 4", {"w4|wrap4|wrap 4 sts|wrap next 4 sts", "wrap4", "wrap4", false,
       "wrap 4: knit 4, slip them back, wind the yarn twice round them, slip them again: the four drawn together"}},
+    {"bo", {"bind off|cast off|b/o|bo st|bo sts|bind off st|bind off sts|cast off st|cast off sts", "BO", "bo", true,
+      "bind off within a row: each bo knitted and passed over the next, one stitch less; written with a count (BO 3 sts) it also knits the stitch the last is passed over, left on the needle, as printed counts mean it"}},
 };
 
 // A generated cross: its notation is its name; its symbol the name without the space.

@@ -552,7 +552,18 @@ class Parser {
     Element e;
     e.stitch = {*id, yarn.value_or(-1)};
     e.count = count;
-    seq.push_back(e);
+    if (explicit_count && *id == stitch_id("bo")) {
+      // "BO 3 sts": three come off, and the stitch the third is passed over stays on the
+      // right needle, worked already: printed counts go on from the stitch after it.
+      Element kept;
+      kept.stitch = {stitch_id("k"), yarn.value_or(-1)};
+      Element group;
+      group.is_group = true;
+      group.body = {e, kept};
+      seq.push_back(group);
+    } else {
+      seq.push_back(e);
+    }
     last_counted_ = explicit_count;
     return true;
   }

@@ -54,7 +54,7 @@ void check_fabric(const Work& w) {
 const char* const texts[] = {"k", "p", "k2, p2", "k2tog", "yo, k2tog", "*k1, p1; rep from *", "k to end", "m1, k",
                              "kfb", "sl1 wyif, k1", "C4F", "k1, (p1, k1) x3", "p2tog, p", "knit the knit sts and purl the purl sts",
                              "k2 B", "cdd", "ssk, k, k2tog", "k1 tbl", "2/2 RC", "k3tog", "k3, pm, k to end",
-                             "k to m, sm, p to end", "p to 2 sts before m, k2, rm, k to end", "*k1, p1; rep from * to m, pm, k"};
+                             "k to m, sm, p to end", "p to 2 sts before m, k2, rm, k to end", "*k1, p1; rep from * to m, pm, k", "BO 3 sts, k to end", "k2, drop, k", "wrap 3, k"};
 
 }  // namespace
 
