@@ -91,6 +91,25 @@ double width_of(const Layout& out, const Loop& l) {
   return out.slot_x[l.course][l.wale + 1] - out.slot_x[l.course][l.wale];
 }
 
+// A course's needle positions relative to its origin: each one's left edge and the last
+// one's right (one more than the positions), and their centres. Up to the first cluster
+// whole loop widths are multiplied, not summed, so that a fabric without clusters keeps
+// the very same coordinates.
+struct Columns {
+  std::vector<double> edges, centres;
+};
+Columns columns_of(const std::vector<double>& widths, double W) {
+  Columns out;
+  out.edges.push_back(0.0);
+  bool uniform = true;
+  for (std::size_t k = 0; k < widths.size(); ++k) {
+    uniform = uniform && widths[k] == W;
+    out.centres.push_back(uniform ? (static_cast<double>(k) + 0.5) * W : out.edges.back() + 0.5 * widths[k]);
+    out.edges.push_back(uniform ? static_cast<double>(k + 1) * W : out.edges.back() + widths[k]);
+  }
+  return out;
+}
+
 // The width of each needle position after each course, mm: W, or a cluster's share.
 std::vector<std::vector<double>> slot_widths(const Layout& out, const knit_graph::Graph& graph) {
   std::vector<std::vector<double>> width(static_cast<std::size_t>(out.courses));
@@ -132,6 +151,7 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
       if (graph.live[s].size() == 1) plain.back().push_back({static_cast<int>(s), graph.loops[graph.live[s].front()].slot});
   for (int c = 0; c < out.courses; ++c) {
     const double width = std::accumulate(widths[c].begin(), widths[c].end(), 0.0);
+    const Columns columns = columns_of(widths[c], W);
     // A tube starts each round at angle zero. Flat work: each course where its plain
     // loops lie over their parents (the median of their offsets), so that stitches bound
     // off or decreased at one edge leave the rest in place; with none, centred over the
@@ -142,30 +162,16 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
       origin = below + 0.5 * (below_width - width);
       if (!plain[c].empty()) {
         std::vector<double> offsets;
-        double at = 0.0;
-        bool uniform = true;  // whole widths multiplied, as the edges below are
-        std::vector<double> centre(widths[c].size());  // relative to the course's origin
-        for (std::size_t k = 0; k < widths[c].size(); ++k) {
-          uniform = uniform && widths[c][k] == W;
-          centre[k] = uniform ? (static_cast<double>(k) + 0.5) * W : at + 0.5 * widths[c][k];
-          at += widths[c][k];
-        }
         for (const auto& [column, parent] : plain[c])
-          offsets.push_back(centre_x(out, c - 1, parent) - centre[static_cast<std::size_t>(column)]);
+          offsets.push_back(centre_x(out, c - 1, parent) - columns.centres[static_cast<std::size_t>(column)]);
         std::sort(offsets.begin(), offsets.end());
         const std::size_t n = offsets.size();
         origin = n % 2 ? offsets[n / 2] : 0.5 * (offsets[n / 2 - 1] + offsets[n / 2]);
       }
     }
     out.origin_x.push_back(origin);
-    std::vector<double>& edges = out.slot_x.emplace_back(1, out.origin_x.back());
-    // Up to the first cluster, whole loop widths by multiplying (not summing), so that a
-    // fabric without clusters keeps the very same coordinates.
-    bool uniform = true;
-    for (std::size_t k = 0; k < widths[c].size(); ++k) {
-      uniform = uniform && widths[c][k] == W;
-      edges.push_back(uniform ? out.origin_x.back() + static_cast<double>(k + 1) * W : edges.back() + widths[c][k]);
-    }
+    std::vector<double>& edges = out.slot_x.emplace_back();
+    for (double e : columns.edges) edges.push_back(origin + e);
     int direction = -1;  // in the round every course runs right to left
     if (pattern.knitting == Knitting::flat) {
       if (c == 0) direction = !pattern.courses.empty() && pattern.courses.front().side == Side::wrong ? -1 : 1;

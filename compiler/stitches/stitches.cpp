@@ -113,8 +113,8 @@ constexpr auto more = std::to_array<StitchDef>({
     // Estonian lace's nupp, as Stitch Maps counts it: five loops out of one stitch, worked
     // loosely, gathered by a five-together on the next row. Printed (k1, yo, k1, yo, k1);
     // as an increase every loop, the yarn overs' too, is pulled through the old stitch.
-    // Its loops bunch into 2.5 loop widths (half a width each, their legs still a yarn
-    // apart at the default proportions), a bump about as wide as real nupps.
+    // Its loops bunch into the one stitch's width, a fifth each (the layout sets them at
+    // alternating depths), so the nupp's row is no wider than the rows around it.
     clustered(plain("nupp", 1, 5, F::increase, Lean::centre, ""), 1.0),
     plain("k5tog", 5, 1, F::decrease, Lean::right, "p5tog"),
     plain("p5tog", 5, 1, F::decrease, Lean::right, "k5tog"),

@@ -85,7 +85,9 @@ std::optional<std::pair<std::string, int>> before_marker(const std::string& w) {
   return std::nullopt;
 }
 
-std::optional<MarkerEnd> marker_word(const std::string& w) {
+}  // namespace
+
+std::optional<MarkerEnd> marker_word(std::string_view w) {
   for (std::string_view p : {"pm", "place marker", "place a marker", "place m"})
     if (w == p) return MarkerEnd::place;
   for (std::string_view s : {"sm", "slip marker", "slip m", "sl m", "slm", "move marker"})
@@ -94,8 +96,6 @@ std::optional<MarkerEnd> marker_word(const std::string& w) {
     if (w == r) return MarkerEnd::remove;
   return std::nullopt;
 }
-
-}  // namespace
 
 std::optional<std::vector<MarkedText>> split_at_markers(std::string_view text) {
   const std::vector<Item> items = items_of(text);

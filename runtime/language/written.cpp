@@ -615,10 +615,9 @@ bool is_edge_stitch(std::string_view spelled) {
 
 bool is_marker(std::string_view spelled) {
   const std::string l = lower(spelled);
-  for (std::string_view marker : {"pm", "sm", "place marker", "slip marker", "place a marker", "move marker", "rm",
-                                  "remove marker", "rsf", "rs facing", "with rs facing", "wsf", "ws facing",
-                                  "with ws facing"})
-    if (l == marker) return true;
+  if (marker_word(l)) return true;
+  for (std::string_view facing : {"rsf", "rs facing", "with rs facing", "wsf", "ws facing", "with ws facing"})
+    if (l == facing) return true;
   return false;
 }
 

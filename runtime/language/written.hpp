@@ -108,6 +108,8 @@ struct MarkedText {
   int before = 0;
 };
 std::optional<std::vector<MarkedText>> split_at_markers(std::string_view text);
+// What a marker's words do ("pm", "slip marker", "rm"), lower case; nothing for others.
+std::optional<MarkerEnd> marker_word(std::string_view spelled);
 
 // Works a parsed row across `live` stitches, in working order: a text without a repeat
 // is repeated until the stitches are used; a *repeat fills what the fixed stitches leave.
