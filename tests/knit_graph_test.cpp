@@ -181,3 +181,49 @@ TEST(KnitGraph, ACourseThatDoesNotFitTheNeedleIsRefused) {
 
 }  // namespace
 }  // namespace knitc
+
+namespace knitc {
+namespace {
+
+// A bobble (MB: five loops in one stitch, three rows more turned over them, gathered)
+// works one stitch and leaves one; its rows hang each through the one below, the gather
+// through the last, and along the yarn each row turns back on the one before.
+TEST(KnitGraph, ABobbleWorksRowsOfLoopsInOneStitchTurningAndGathersThem) {
+  const auto g = knit_graph::build(run("cast_on(3)\nrow \"p1, MB, p1\"\nrow \"k\"\n", true));
+  ASSERT_EQ(g.bobbles.size(), 1u);
+  const knit_graph::Bobble& b = g.bobbles.front();
+  EXPECT_EQ(b.loops, 5);
+  EXPECT_EQ(b.rows, 4);
+  EXPECT_EQ(g.needle, (std::vector<int>{3, 3, 3}));
+  EXPECT_EQ(g.course_first[2] - g.course_first[1], 2 + 5 * 4 + 1);
+  const int base = 1;  // the cast-on's middle loop
+  auto loop = [&](int i) { return g.loops[static_cast<std::size_t>(i)]; };
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_EQ(loop(b.first + k).parents, std::vector<int>{base}) << "row 0 lane " << k;
+    for (int r = 1; r < 4; ++r) EXPECT_EQ(loop(b.first + r * 5 + k).parents, std::vector<int>{b.first + (r - 1) * 5 + k});
+  }
+  EXPECT_EQ(loop(b.gathered()).parents, (std::vector<int>{b.first + 15, b.first + 16, b.first + 17, b.first + 18, b.first + 19}));
+  // Worked right to left on the right side: row 0 from lane 4, row 1 back from lane 0,
+  // and so on; then the gather; then the stitch to its left.
+  std::vector<int> along;
+  for (int r = 0; r < 4; ++r)
+    for (int k = 0; k < 5; ++k) along.push_back(b.first + r * 5 + (r % 2 == 0 ? 4 - k : k));
+  along.push_back(b.gathered());
+  for (std::size_t j = 1; j < along.size(); ++j)
+    EXPECT_EQ(loop(along[j]).order, loop(along[j - 1]).order + 1) << "step " << j;
+  EXPECT_EQ(loop(b.gathered()).slot, 1);
+  EXPECT_EQ(loop(b.first + 7).slot, 1);  // every loop of it in its stitch's column
+}
+
+// A bobble's size follows its working in a glossary; on a wrong-side row it is refused.
+TEST(KnitGraph, ABobbleTakesItsSizeFromItsWorking) {
+  const auto g = knit_graph::build(
+      run("stitch(\"MB\", \"[k1, p1, k1, p1], turn; K4, turn; P4, pass 2nd, 3rd and 4th st over 1st\")\ncast_on(3)\nrow \"p1, MB, p1\"\n", true));
+  ASSERT_EQ(g.bobbles.size(), 1u);
+  EXPECT_EQ(g.bobbles.front().loops, 4);
+  EXPECT_EQ(g.bobbles.front().rows, 3);
+  EXPECT_THROW(run("cast_on(3)\nrow \"k\"\nrow \"k1, MB, k1\"\n", true), runtime::PatternError);
+}
+
+}  // namespace
+}  // namespace knitc

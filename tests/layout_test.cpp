@@ -262,3 +262,34 @@ TEST(YarnPathsOfFabrics, InTheRoundTheYarnSpiralsRoundATube) {
 
 }  // namespace
 }  // namespace knitc
+
+namespace knitc {
+namespace {
+
+// A bobble's rows stand out of the face, in front of every loop of the fabric, within a
+// few loop widths of its stitch; its turned rows are worked against their course.
+TEST(Templates, ABobbleStandsOutOfTheFaceAndItsTurnedRowsRunBack) {
+  const auto l = layout::lay_out(run("cast_on(5)\nrow \"k\"\nrow \"p\"\nrow \"k2, MB, k2\"\nrow \"p\"\n"));
+  ASSERT_EQ(l.bobbles.size(), 1u);
+  const auto& b = l.bobbles.front();
+  const double W = 4.0, T = 2.0;
+  double front = 0.0, fabric_front = 0.0;
+  for (std::size_t i = 0; i < l.loops.size(); ++i) {
+    const bool in_bobble = static_cast<int>(i) >= b.first && static_cast<int>(i) < b.gathered();
+    for (const auto& p : l.loops[i].data_points) {
+      if (in_bobble) {
+        front = std::max(front, p.z);
+        EXPECT_LT(std::abs(p.x - 2.5 * W), 2.0 * W);
+      } else {
+        fabric_front = std::max(fabric_front, p.z);
+      }
+    }
+  }
+  EXPECT_GT(front, fabric_front + T);
+  for (int r = 0; r < b.rows; ++r)
+    EXPECT_EQ(layout::way(l, static_cast<std::size_t>(b.first + r * b.loops)), r % 2 ? 1 : -1) << "row " << r;
+  EXPECT_EQ(layout::way(l, static_cast<std::size_t>(b.gathered())), -1);
+}
+
+}  // namespace
+}  // namespace knitc

@@ -181,16 +181,16 @@ TEST(Glossary, AWorkingKnitcCannotReadIsRefusedWithTheReason) {
     }
     return std::string("no error");
   };
-  EXPECT_EQ(error("stitch(\"MB\", \"make a bobble\")\n"),
-            "t.lua:3: knitc cannot read the working of 'MB' (\"make a bobble\"): give a stitch it knows (knitc reference "
+  EXPECT_EQ(error("stitch(\"TS\", \"make a tassel\")\n"),
+            "t.lua:3: knitc cannot read the working of 'TS' (\"make a tassel\"): give a stitch it knows (knitc reference "
             "lists them), a few of them (\"k2, p2\") or a cross in words (\"sl 2 to cn, hold in front, k2, k2 from cn\")");
   EXPECT_EQ(error("stitch(\"ssk\", \"k2tog\")\n"),
             "t.lua:3: 'ssk' is a stitch knitc knows already; declare a name of the pattern's own");
   EXPECT_EQ(error("stitch(\"Q1\", \"k1 tbl\")\nstitch(\"q1\", \"p1\")\n"), "t.lua:4: 'q1' is declared already at line 3");
   // A knitspeak glossary line knitc cannot read: the row that uses it is refused, its
   // definition quoted.
-  EXPECT_EQ(error("knitspeak [[\nMB = make a bobble in the next st.\nRow 1: k3, MB, k4.\n]]\n"),
-            "t.lua:5: row 1 of the text uses 'MB', which line 4 defines as \"make a bobble in the next st.\"; knitc cannot "
+  EXPECT_EQ(error("knitspeak [[\nTS = make a tassel in the next st.\nRow 1: k3, TS, k4.\n]]\n"),
+            "t.lua:5: row 1 of the text uses 'TS', which line 4 defines as \"make a tassel in the next st.\"; knitc cannot "
             "read that working yet: write the row with stitches it knows (knitc reference lists them)");
 }
 

@@ -174,6 +174,19 @@ Graph build(const Pattern& pattern) {
         at += static_cast<std::size_t>(s.consumes);
         continue;
       }
+      if (s.bobble_loops > 0) {  // a row of loops out of one stitch, rows on them, gathered
+        Bobble b{number, static_cast<int>(g.loops.size()), s.bobble_loops, s.bobble_rows};
+        for (int r = 0; r < b.rows; ++r)
+          for (int k = 0; k < b.loops; ++k)
+            new_loop(r == 0 ? live[at] : std::vector<int>{b.first + (r - 1) * b.loops + k}, false);
+        std::vector<int> last(static_cast<std::size_t>(b.loops));
+        for (int k = 0; k < b.loops; ++k) last[static_cast<std::size_t>(k)] = b.first + (b.rows - 1) * b.loops + k;
+        next.push_back({new_loop(std::move(last), false)});
+        next_loose.push_back(loose_over(at, 1));
+        g.bobbles.push_back(b);
+        at += 1;
+        continue;
+      }
       switch (s.family) {
         case StitchFamily::slip: {
           // Stitches slipped one after another ("sl3 wyif") leave one float across them all.
@@ -234,6 +247,21 @@ Graph build(const Pattern& pattern) {
     for (std::size_t k = 0; k < made; ++k) {
       Loop& l = g.loops[course.side == Side::right ? first_loop + made - 1 - k : first_loop + k];
       l.order = yarn_order[l.yarn]++;
+    }
+    // A bobble's rows turn: its loops take the same places along the yarn, reordered as
+    // worked: row 0 as its course goes, each next row back the other way, then the gather.
+    for (auto b = g.bobbles.rbegin(); b != g.bobbles.rend() && b->course == number; ++b) {
+      const int n = b->loops;
+      std::vector<int> orders;
+      for (int i = b->first; i <= b->gathered(); ++i) orders.push_back(g.loops[static_cast<std::size_t>(i)].order);
+      std::sort(orders.begin(), orders.end());
+      std::size_t next_order = 0;
+      for (int r = 0; r < b->rows; ++r) {
+        const bool leftwards = (course.side == Side::right) == (r % 2 == 0);
+        for (int k = 0; k < n; ++k)
+          g.loops[static_cast<std::size_t>(b->first + r * n + (leftwards ? n - 1 - k : k))].order = orders[next_order++];
+      }
+      g.loops[static_cast<std::size_t>(b->gathered())].order = orders[next_order];
     }
     g.needle.push_back(static_cast<int>(next.size()));
     g.columns.push_back(static_cast<int>(next.size()) + bound);

@@ -16,6 +16,9 @@
 //                                  from, each loop of it left as a straight rung;
 //   wrap                           a new loop through each stitch, then the yarn wound round them;
 //   bind off (bo)                  a new loop through it, off the needle: bound, a column of its own;
+//   bobble (MB)                    n loops through it, rows of n worked back and forth over
+//                                  them (each through the one below), and one loop through
+//                                  the last n: the stitch it leaves;
 //   no stitch                      nothing.
 #pragma once
 
@@ -70,6 +73,17 @@ struct Wrap {
   int turns = 0;
 };
 
+// A bobble worked in one stitch of a course: `rows` rows of `loops` loops, indices
+// first + row * loops + lane (rows from 0, the row that made them; lanes left to right in
+// face view), then the loop that gathers the last row, first + rows * loops, which stays
+// on the needle. Row 0 is worked in its course's direction, each next row turned back.
+struct Bobble {
+  int course = 0;
+  int first = 0;
+  int loops = 0, rows = 0;
+  int gathered() const { return first + rows * loops; }
+};
+
 // How many rows below a float can still be caught: a strand slipped further down is no
 // longer loose enough to lift (real patterns catch them 2 to 8 rows up).
 inline constexpr int float_reach = 10;
@@ -79,6 +93,7 @@ struct Graph {
   std::vector<int> course_first;  // index of each course's first loop; one more entry at the end
   std::vector<Float> floats;      // course by course
   std::vector<Wrap> wraps;        // course by course
+  std::vector<Bobble> bobbles;    // course by course
   std::vector<int> needle;        // live stitches after each course (the cast-on's first)
   std::vector<int> columns;       // each course's columns: its live stitches and those it bound off
   // After the last course: the live stitches, each the loops its needle holds.

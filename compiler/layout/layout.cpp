@@ -6,6 +6,8 @@
 #include <numbers>
 #include <numeric>
 
+#include <glm/vec2.hpp>
+
 namespace knitc::layout {
 
 namespace {
@@ -182,6 +184,7 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
   }
   out.floats = graph.floats;
   out.wraps = graph.wraps;
+  out.bobbles = graph.bobbles;
   return out;
 }
 
@@ -210,7 +213,21 @@ void take_loops(Layout& out, const knit_graph::Graph& graph) {
       l.shape = (s.cable.middle > 0 ? std::abs(from - to) > 0.25 * W : in_front) ? Template::knit : Template::purl;
     }
   }
+  for (const auto& b : out.bobbles)
+    for (int r = 1; r < b.rows; r += 2)
+      for (int k = 0; k < b.loops; ++k) out.loops[static_cast<std::size_t>(b.first + r * b.loops + k)].against = true;
 }
+
+}  // namespace
+
+std::vector<char> in_bobbles(const Layout& out) {
+  std::vector<char> in(out.loops.size(), 0);
+  for (const auto& b : out.bobbles)
+    for (int i = b.first; i <= b.gathered(); ++i) in[static_cast<std::size_t>(i)] = 1;
+  return in;
+}
+
+namespace {
 
 // The bind-off course after the graph's loops, worked with the yarn that worked last;
 // its loops' parents are the live stitches.
@@ -317,12 +334,13 @@ std::vector<double> cable_leans(const Layout& out, const std::vector<std::vector
 void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::vector<int>>& parents,
                   const std::vector<double>& lean) {
   const double W = out.loop_width, C = out.course_spacing;
+  const std::vector<char> bobbled = in_bobbles(out);
   auto leans_otherwise = [&](std::size_t i, std::size_t j) {  // j: i's neighbour in its course, if any
     const Loop &a = out.loops[i], &b = out.loops[j];
     return a.course != b.course || std::abs(a.wale - b.wale) != 1 || std::abs(lean[i] - lean[j]) > 1e-9;
   };
   for (std::size_t i = 0; i < out.loops.size(); ++i) {
-    if (parents[i].empty()) continue;
+    if (parents[i].empty() || bobbled[i]) continue;
     Loop& child = out.loops[i];
     const StitchDef& s = stitch(child.stitch);
     const double d = pattern.yarns[child.yarn].diameter;
@@ -368,6 +386,55 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
       for (int j = 0; j < loop_points; ++j) parent.data_points[j] += head[j] * shift;
     }
     for (int j = 0; j < loop_points; ++j) child.data_points[j].x += legs[j] * (meet - cx);
+  }
+}
+
+// A bobble stands out of the face: its rows are a strip bent round a ring across the
+// course (in the y-z plane through its stitch), from just over the stitch below, down
+// and out in front of it, up and over, and back to the fabric a little higher, where the
+// loop that gathers the last row holds it. The strip's face (the legs) is outside, its
+// sinker and needle loops on the ring; it fans out from the one stitch's width to
+// 0.6 W a loop at the front. The gathering loop stands in its course with the foot the
+// yarn enters by raised behind the last row's heads, whose yarn it comes from.
+void shape_bobbles(Layout& out, const Pattern& pattern) {
+  const auto plain = plain_loop(pattern.gauge);
+  const double W = out.loop_width, C = out.course_spacing, H = pattern.gauge.loop_height, T = pattern.gauge.thickness;
+  const double gap = std::numbers::pi / 4.0;  // the ring's open part, behind, between its ends
+  for (const auto& b : out.bobbles) {
+    const Loop& base = out.loops[static_cast<std::size_t>(b.first)];
+    const double cx = centre_x(out, base.course, base.wale), y0 = base.course * C;
+    const double end = (b.rows - 1) * C + H;  // along the ring: the last row's heads
+    const double R = end / (2.0 * std::numbers::pi - gap);
+    const double start = -0.5 * std::numbers::pi + 0.5 * gap;  // angle from straight down, turning out to the front
+    const glm::dvec2 first(y0 + 0.05 * H, 0.2 * T);          // (y, z) of row 0's sinker loops
+    const glm::dvec2 centre = first + R * glm::dvec2(std::cos(start), -std::sin(start));
+    const double narrow = W, wide = 0.6 * W * b.loops;
+    auto ring = [&](double along, double x_frac, double depth) {  // depth: out from the ring
+      const double a = start + std::min(along, end) / R;
+      const glm::dvec2 normal(-std::cos(a), std::sin(a));
+      const glm::dvec2 p = centre + R * normal + depth * normal;
+      const double width = narrow + (wide - narrow) * std::sin(std::numbers::pi * std::clamp(along / end, 0.0, 1.0));
+      return glm::dvec3(cx + (x_frac - 0.5) * width, p.x, p.y);
+    };
+    for (int r = 0; r < b.rows; ++r)
+      for (int k = 0; k < b.loops; ++k) {
+        Loop& l = out.loops[static_cast<std::size_t>(b.first + r * b.loops + k)];
+        for (int i = 0; i < loop_points; ++i) {
+          const glm::dvec3& p = plain[static_cast<std::size_t>(i)];
+          l.data_points[static_cast<std::size_t>(i)] = ring(r * C + p.y, (k + p.x / W) / b.loops, 0.7 * p.z);
+        }
+      }
+    // The gathering loop: the foot it is entered by behind and below the last row's heads.
+    Loop& top = out.loops[static_cast<std::size_t>(b.gathered())];
+    const bool leftwards = out.direction[top.course] < 0;
+    const int foot = leftwards ? loop_points - 1 : 0;
+    const glm::dvec3 heads = ring(end, 0.5, 0.0);
+    const glm::dvec3 raised(cx + (leftwards ? 0.3 : -0.3) * W, heads.y - 0.3 * H, heads.z - 0.5 * T);
+    const glm::dvec3 move = raised - top.data_points[static_cast<std::size_t>(foot)];
+    for (int i = 0; i < loop_points; ++i) {
+      const double weight = std::max(0.0, (leftwards ? i - 8 : 8 - i) / 8.0);
+      top.data_points[static_cast<std::size_t>(i)] += weight * move;
+    }
   }
 }
 
@@ -430,9 +497,16 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
   if (bind_off) add_bind_off(out, pattern, graph, parents);
   place_templates(out, pattern, tucks_purled_off(out, parents));
   pull_through(out, pattern, parents, cable_leans(out, parents));
+  shape_bobbles(out, pattern);
   lift_caught_floats(out, pattern, parents);
   part_wrapped_sinkers(out);
   return out;
+}
+
+int way(const Layout& layout, std::size_t index) {
+  const Loop& l = layout.loops[index];
+  const int course_way = layout.direction[static_cast<std::size_t>(l.course)];
+  return l.against ? -course_way : course_way;
 }
 
 double course_width(const Layout& layout, int course) {

@@ -44,6 +44,8 @@ struct Loop {
   int yarn = 0;    // index into Pattern::yarns
   int order = 0;   // place along its yarn, in working order
   Template shape = Template::knit;
+  // Worked against its course's direction: a bobble's turned rows.
+  bool against = false;
   // mm, course-local flat coordinates, P0 at the left (face view) whichever way it is worked
   std::array<glm::dvec3, loop_points> data_points;
 };
@@ -66,6 +68,7 @@ struct Layout {
   // under the legs of the loop that catches it and over its parent's head; empty if loose.
   std::vector<std::vector<glm::dvec3>> float_lifts;
   std::vector<knit_graph::Wrap> wraps;  // yarn wound round groups of loops, course by course
+  std::vector<knit_graph::Bobble> bobbles;  // bobbles, course by course: their rows stand out of the face on a ring
   // The z of yarn floating behind and in front of the fabric: clear of the loops' legs.
   double float_behind = 0.0, float_in_front = 0.0;
 };
@@ -75,6 +78,12 @@ struct Layout {
 // not work the needle's live stitches.
 Layout lay_out(const Pattern& pattern);
 Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph);
+
+// The way loop `index` is worked, face view: -1 right to left, +1 left to right.
+int way(const Layout& layout, std::size_t index);
+
+// Per loop: 1 for a bobble's loops (its rows and the loop that gathers them), else 0.
+std::vector<char> in_bobbles(const Layout& layout);
 
 // The width of a course, mm: from its first needle position's left edge to its last's right.
 double course_width(const Layout& layout, int course);

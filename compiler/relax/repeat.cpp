@@ -135,6 +135,7 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   for (const auto& f : layout.floats)
     if (f.caught_by >= 0) return std::nullopt;
   if (!layout.wraps.empty()) return std::nullopt;  // a winding spans its group's loops
+  if (!layout.bobbles.empty()) return std::nullopt;  // a bobble's rows share one needle position
   for (const auto& loop : layout.loops)  // bound off within a row: the columns change
     if (loop.shape == layout::Template::bind_off && loop.course + 1 < layout.courses) return std::nullopt;
   for (const auto& edges : layout.slot_x)

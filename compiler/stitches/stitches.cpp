@@ -202,6 +202,17 @@ std::vector<StitchDef> build_table() {
     }
     all[i].wrong_side_face = same->name;
   }
+  // Bobbles, every size knitters print: (k1, p1, k1) to seven loops in one stitch, worked
+  // up to six rows high. Right side only: worked on a wrong-side row a bobble pops out of
+  // the back, which knitc does not draw.
+  for (int n = bobble_loops_min; n <= bobble_loops_max; ++n)
+    for (int r = bobble_rows_min; r <= bobble_rows_max; ++r) {
+      StitchDef d = plain("", 1, 1, F::knit, Lean::none, "");
+      d.bobble_loops = n;
+      d.bobble_rows = r;
+      d.name = text.emplace_back(bobble_name(n, r));
+      all.push_back(d);
+    }
   return all;
 }
 
@@ -264,5 +275,7 @@ std::string cross_notation(const StitchDef& s) {
   if (c.purled) out += " purled";
   return out;
 }
+
+std::string bobble_name(int loops, int rows) { return "bobble " + std::to_string(loops) + "x" + std::to_string(rows); }
 
 }  // namespace knitc

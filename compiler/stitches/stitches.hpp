@@ -64,6 +64,11 @@ struct StitchDef {
   // A wrap (wrap 3): its stitches are each knitted, then the yarn is wound this many times
   // round them all. 0: no winding.
   int wraps = 0;
+  // A bobble (MB): `bobble_loops` loops worked into the stitch, then worked back and
+  // forth over them in short rows, `bobble_rows` rows in all counting the one that made
+  // them, and gathered into one loop again (k5tog, or the others passed over the first).
+  // It works one stitch and leaves one; 0: not a bobble.
+  int bobble_loops = 0, bobble_rows = 0;
   // The stitch as it shows on the face when worked on a wrong-side row (k shows as p);
   // empty if it has no wrong-side form.
   std::string_view wrong_side_face;
@@ -88,5 +93,9 @@ CrossCounts cross_counts(const StitchDef& s);
 // name a cross's facts give it, "2/2 RC purled" for a knit cross seen from the back.
 // Empty for other stitches.
 std::string cross_notation(const StitchDef& s);
+// The bobbles the table has: loops made in the stitch and rows worked over them, each
+// within these bounds; and the name of one ("bobble 5x4", the printed MB).
+inline constexpr int bobble_loops_min = 3, bobble_loops_max = 7, bobble_rows_min = 1, bobble_rows_max = 6;
+std::string bobble_name(int loops, int rows);
 
 }  // namespace knitc

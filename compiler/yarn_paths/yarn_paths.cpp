@@ -14,7 +14,7 @@ using layout::Layout;
 // The first point of a loop along the yarn, course-local.
 glm::dvec3 entry(const Layout& layout, int index) {
   const layout::Loop& l = layout.loops[index];
-  return l.data_points[layout.direction[l.course] < 0 ? layout::loop_points - 1 : 0];
+  return l.data_points[layout::way(layout, static_cast<std::size_t>(index)) < 0 ? layout::loop_points - 1 : 0];
 }
 
 // Builds one piece, its points in course-local coordinates mapped to the fabric as they go.
@@ -49,7 +49,7 @@ struct PieceBuilder {
 
   void add_loop(int index) {
     const layout::Loop& loop = layout.loops[index];
-    const bool reversed = layout.direction[loop.course] < 0;
+    const bool reversed = layout::way(layout, static_cast<std::size_t>(index)) < 0;
     // The yarn's first point on the loop is shared with the loop worked before, or a new one.
     const bool shared = !piece.data_points.empty() &&
                         glm::distance(layout::to_fabric(layout, entry(layout, index), loop.course), piece.data_points.back()) < 1e-9;
@@ -124,6 +124,7 @@ std::vector<Piece> trace_smooth(const Layout& layout) {
     const auto& w = layout.wraps[i];
     wrap_after[static_cast<std::size_t>(layout.direction[w.course] < 0 ? w.first : w.last)] = static_cast<int>(i);
   }
+  const std::vector<char> bobbled = layout::in_bobbles(layout);
   std::vector<Piece> pieces;
   for (int y = 0; y < yarns; ++y) {
     auto& order = along[y];
@@ -142,6 +143,9 @@ std::vector<Piece> trace_smooth(const Layout& layout) {
       const glm::dvec3 start = entry(layout, index);
       if (b.piece.loops.empty()) {
         b.piece.yarn = y;
+      } else if (course == b.last_course && bobbled[static_cast<std::size_t>(index)] && k > 0 &&
+                 bobbled[static_cast<std::size_t>(order[k - 1])]) {
+        // On through a bobble: turned at its edge, or up into the loop gathering it.
       } else if (course == b.last_course) {
         // Needle positions passed by within the course, or a cable's sinker loop crossing
         // behind it: a float, behind unless slipped wyif.

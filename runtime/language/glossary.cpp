@@ -92,6 +92,32 @@ std::optional<std::string> cross_named(const std::smatch& m) {
   return std::string(stitch(*id).name);
 }
 
+// A bobble worked in words: "[k1, p1, k1, p1], turn; K4, turn; P4, pass 2nd st over 1st
+// ...", "(k1, yo, k1, yo, k1) in next st, turn, p5, turn, k5, turn, p5, turn, k5tog": the
+// loops the first bracket makes in one stitch, and a row more for each turn followed by a
+// row of that many (k5tog, the gather, is not one). Its name in the stitch table.
+std::optional<std::string> bobble_in_words(std::string_view definition) {
+  const std::string low = lower(words_of(definition.substr(0, longest_definition)));
+  const std::size_t open = low.find_first_of("[(");
+  const std::size_t close = open == std::string::npos ? open : low.find_first_of("])", open);
+  if (close == std::string::npos || find_word(low, "turn", close) == std::string::npos) return std::nullopt;
+  static const std::regex item(R"(\b(k|p|yo)\s*(\d?)\b)");
+  int loops = 0;
+  const std::string group = low.substr(open + 1, close - open - 1);
+  for (auto m = std::sregex_iterator(group.begin(), group.end(), item); m != std::sregex_iterator(); ++m)
+    loops += (*m)[2].length() > 0 ? std::stoi((*m)[2]) : 1;
+  int rows = 1;
+  for (std::size_t at = find_word(low, "turn", close); at != std::string::npos;) {
+    const std::size_t next = find_word(low, "turn", at + 4);
+    const std::string part = low.substr(at + 4, next == std::string::npos ? std::string::npos : next - at - 4);
+    const std::regex row(R"(\b(k|p)\s*)" + std::to_string(loops) + R"(\b)");
+    if (std::regex_search(part, row)) ++rows;
+    at = next;
+  }
+  if (loops < bobble_loops_min || loops > bobble_loops_max || rows > bobble_rows_max) return std::nullopt;
+  return bobble_name(loops, rows);
+}
+
 bool only_punctuation(std::string_view s) { return s.find_first_not_of(" \t.,;:") == std::string_view::npos; }
 
 }  // namespace
@@ -131,6 +157,11 @@ std::optional<GlossaryEntry> read_line(std::string_view line, int number, bool n
   for (char c : abbreviation)
     if (!word_char(c) && c != ' ' && c != '/' && c != '&' && c != '-') return std::nullopt;
   GlossaryEntry e{std::string(abbreviation), number, std::string(definition.substr(0, longest_definition)), std::nullopt};
+  // A bobble's working says its size, which MB alone does not: the working wins.
+  if (auto bobble = bobble_in_words(e.definition)) {
+    e.means = std::move(bobble);
+    return e;
+  }
   // An abbreviation knitc reads already is the glossary explaining it: nothing to learn.
   if (is_edge_stitch(abbreviation) || is_marker(abbreviation) ||
       std::holds_alternative<Reading>(read_stitch(normalise(abbreviation)))) {

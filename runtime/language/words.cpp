@@ -154,6 +154,27 @@ StitchWords cross_words(const StitchDef& d) {
   return w;
 }
 
+// A generated bobble: "bobble 5x4", its symbol MB5x4; the usual one (five loops, four rows)
+// is the printed MB.
+StitchWords bobble_words(const StitchDef& d) {
+  static std::deque<std::string> text;
+  const std::string size = std::to_string(d.bobble_loops) + "x" + std::to_string(d.bobble_rows);
+  const bool usual = d.bobble_loops == 5 && d.bobble_rows == 4;
+  StitchWords w;
+  w.symbol = text.emplace_back(usual ? "MB" : "MB" + size);
+  if (usual) {
+    w.aliases = "mb|make bobble|make a bobble|bobble|lg bobble|large bobble";
+    w.identifier = "mb";
+  }
+  const int n = d.bobble_loops, r = d.bobble_rows;
+  std::string what = "bobble: " + std::to_string(n) + " loops worked into one stitch (k1, p1, k1 ...)";
+  if (r > 1) what += ", then " + std::to_string(r - 1) + (r == 2 ? " row" : " rows") + " worked back and forth over them";
+  what += ", gathered into one again: one stitch out of one";
+  if (usual) what += " (the printed MB: (k1, p1, k1, p1, k1) in the next st, turn, p5, turn, k5, turn, p5, turn, k5tog)";
+  w.summary = text.emplace_back(std::move(what));
+  return w;
+}
+
 const std::vector<StitchWords>& all_words() {
   static const std::vector<StitchWords> all = [] {
     const auto table = stitch_table();
@@ -163,6 +184,8 @@ const std::vector<StitchWords>& all_words() {
     for (const StitchDef& d : table) {
       if (next < std::size(entries) && entries[next].name == d.name) {
         v.push_back(entries[next++].words);
+      } else if (d.bobble_loops > 0) {
+        v.push_back(bobble_words(d));
       } else {
         assert(!cross_notation(d).empty() && cross_notation(d) == d.name && "a stitch without words");
         v.push_back(cross_words(d));
