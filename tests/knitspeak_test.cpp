@@ -48,6 +48,16 @@ TEST(Knitspeak, ReadsLabelsListsAndRangesInNumberOrder) {
   EXPECT_TRUE(k.skipped.empty());
 }
 
+// "(-3 sts)" after a row says what it took away, not what it leaves: a note, dropped, no
+// stated count (the fuzzer found it read as a count of -3).
+TEST(Knitspeak, ASignedCountIsANoteNotTheRowsCount) {
+  const auto r = language::read_knitspeak("Row 1: k1, k2tog (-1 sts).\nRow 2: Purl.\n", {});
+  const auto& k = read_ok(r);
+  ASSERT_EQ(k.rows.size(), 2u);
+  EXPECT_EQ(k.rows[0].text, "k1, k2tog");
+  EXPECT_FALSE(k.rows[0].stitches_after.has_value());
+}
+
 TEST(Knitspeak, RowsGivenAsEarlierOnesAndRepeatsWhereTheyStand) {
   const auto r = language::read_knitspeak(
       "Rnd 1: k1, p1.\nRnd 2: p1, k1.\nRnds 3-4: Repeat rnds 1-2.\nRepeat rounds 2-3.\nRnd 5 \u2013 6: Knit.\n", {});
