@@ -432,7 +432,8 @@ void shape_bobbles(Layout& out, const Pattern& pattern) {
     const glm::dvec3 raised(cx + (leftwards ? 0.3 : -0.3) * W, heads.y - 0.3 * H, heads.z - 0.5 * T);
     const glm::dvec3 move = raised - top.data_points[static_cast<std::size_t>(foot)];
     for (int i = 0; i < loop_points; ++i) {
-      const double weight = std::max(0.0, (leftwards ? i - 8 : 8 - i) / 8.0);
+      const int needle_loop = loop_points / 2;  // stays; the foot moves all the way
+      const double weight = std::max(0.0, static_cast<double>(leftwards ? i - needle_loop : needle_loop - i) / needle_loop);
       top.data_points[static_cast<std::size_t>(i)] += weight * move;
     }
   }

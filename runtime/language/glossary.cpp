@@ -106,15 +106,16 @@ std::optional<std::string> bobble_in_words(std::string_view definition) {
   const std::string group = low.substr(open + 1, close - open - 1);
   for (auto m = std::sregex_iterator(group.begin(), group.end(), item); m != std::sregex_iterator(); ++m)
     loops += (*m)[2].length() > 0 ? std::stoi((*m)[2]) : 1;
+  if (loops < bobble_loops_min || loops > bobble_loops_max) return std::nullopt;
+  const std::regex row(R"(\b(k|p)\s*)" + std::to_string(loops) + R"(\b)");
   int rows = 1;
   for (std::size_t at = find_word(low, "turn", close); at != std::string::npos;) {
     const std::size_t next = find_word(low, "turn", at + 4);
     const std::string part = low.substr(at + 4, next == std::string::npos ? std::string::npos : next - at - 4);
-    const std::regex row(R"(\b(k|p)\s*)" + std::to_string(loops) + R"(\b)");
     if (std::regex_search(part, row)) ++rows;
     at = next;
   }
-  if (loops < bobble_loops_min || loops > bobble_loops_max || rows > bobble_rows_max) return std::nullopt;
+  if (rows > bobble_rows_max) return std::nullopt;
   return bobble_name(loops, rows);
 }
 

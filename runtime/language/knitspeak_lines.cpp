@@ -359,7 +359,6 @@ std::string without_count(std::string text, std::optional<int>& count) {
   const std::string_view rest = trim(std::string_view(inside).substr(static_cast<std::size_t>(end - inside.data())));
   if (ec == std::errc() && (rest == "sts" || rest == "st" || rest == "stitches" || rest == "stitch")) {
     if (n >= 0) count = n;  // "(-3 sts)" says what the row took away, not what it leaves: a note
-
     return std::string(trim(t.substr(0, open)));
   }
   if (inside.rfind("multiple of", 0) == 0) return std::string(trim(t.substr(0, open)));

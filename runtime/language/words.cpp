@@ -158,7 +158,7 @@ StitchWords cross_words(const StitchDef& d) {
 // is the printed MB.
 StitchWords bobble_words(const StitchDef& d) {
   static std::deque<std::string> text;
-  const std::string size = std::to_string(d.bobble_loops) + "x" + std::to_string(d.bobble_rows);
+  const std::string size(d.name.substr(d.name.find(' ') + 1));  // "5x4", as bobble_name() writes it
   const bool usual = d.bobble_loops == 5 && d.bobble_rows == 4;
   StitchWords w;
   w.symbol = text.emplace_back(usual ? "MB" : "MB" + size);
