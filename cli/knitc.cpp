@@ -58,8 +58,16 @@ struct Args {
   std::optional<knitc::Quality> quality;
   bool stats = false;
   bool quiet = false;
-  bool compress = false;
+  bool compress = false, no_compress = false;
+  bool flatten = false, instance = false;
 };
+
+// --compress where it pays: on for an instanced fabric (a garment's file, for readers that
+// know the extensions anyway), off for a flat one (every reader opens it), unless told.
+bool compressed(const Args& args, const knitc::Fabric& fabric) {
+  if (args.compress || args.no_compress) return args.compress;
+  return fabric.instanced;
+}
 
 // The pattern, or the exit code when it could not be had. Warnings go to stderr.
 std::variant<knitc::Pattern, int> load(const Args& args) {
@@ -171,7 +179,8 @@ int build(const Args& args) {
   const auto& [pattern, fabric, relax_seconds] = std::get<Compiled>(result);
   std::vector<knitc::writers::OutputFile> files;
   files.push_back({args.output, [&](std::ostream& out) {
-                     knitc::writers::write_glb(fabric.mesh, "knitc " KNITC_VERSION, out, {args.compress, args.compress});
+                     const bool small = compressed(args, fabric);
+                     knitc::writers::write_glb(fabric.mesh, "knitc " KNITC_VERSION, out, {small, small});
                    }});
   if (!args.centreline.empty())
     files.push_back(knitc::writers::text_file(args.centreline, knitc::writers::centreline_json(pattern, fabric, args.compile.loop_model)));
@@ -321,6 +330,13 @@ void add_compile_options(CLI::App* cmd, Args& a) {
                   "while relaxing: free (default), held (the cast-on and last course stay put) or periodic (the swatch is "
                   "one repeat of an endless fabric)")
       ->transform(CLI::CheckedTransformer(boundaries, CLI::ignore_case));
+  auto* flatten = cmd->add_flag("--flatten", a.flatten,
+                                "write every triangle, never an instanced repeat (for printing, simulation, or readers "
+                                "without EXT_mesh_gpu_instancing)");
+  cmd->add_flag("--instance", a.instance,
+                "mesh a relaxed repeat once and place it across the fabric (EXT_mesh_gpu_instancing) whatever its size; by "
+                "default only a fabric whose flat mesh would pass 2 million vertices is")
+      ->excludes(flatten);
   cmd->add_flag("--stats", a.stats, "print counts, bounds and measures of the result");
   cmd->add_option("--threads", a.compile.threads, "threads to use (default: every core); the output is the same for any")
       ->check(CLI::Range(1, 256));
@@ -375,9 +391,12 @@ void declare_commands(Commands& c) {
   add_pattern_options(c.build_cmd, c.build);
   c.build_cmd->add_option("-o,--output", c.build.output, "the .glb to write (- for standard output)")->required();
   c.build_cmd->add_option("--centreline", c.build.centreline, "also write the centrelines and loop data points as JSON (mm)");
-  c.build_cmd->add_flag("--compress", c.build.compress,
-                        "a smaller file: positions (uint16) and normals (int8) quantised with KHR_mesh_quantization, then "
-                        "every buffer view encoded by meshoptimizer (EXT_meshopt_compression)");
+  auto* compress = c.build_cmd->add_flag("--compress", c.build.compress,
+                                         "a smaller file: positions (uint16) and normals (int8) quantised with "
+                                         "KHR_mesh_quantization, then every buffer view encoded by meshoptimizer "
+                                         "(EXT_meshopt_compression); the default for an instanced fabric");
+  c.build_cmd->add_flag("--no-compress", c.build.no_compress, "plain floats and indices, even for an instanced fabric")
+      ->excludes(compress);
   add_compile_options(c.build_cmd, c.build);
 
   c.render_cmd = app.add_subcommand("render", "draw a lit preview of a pattern's fabric (.png)");
@@ -463,7 +482,13 @@ void settle_defaults(Commands& c) {
   }
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
                            std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.bench_cmd, &c.bench}}) {
-    if (!cmd->parsed() || !args->quality) continue;
+    if (!cmd->parsed()) continue;
+    args->compile.instancing = args->flatten    ? knitc::Instancing::flatten
+                               : args->instance ? knitc::Instancing::instance
+                                                : knitc::Instancing::automatic;
+    const bool given = cmd->get_option("--sides")->count() != 0 || cmd->get_option("--tolerance")->count() != 0;
+    args->compile.density_from_view = !args->quality && !given;
+    if (!args->quality) continue;
     const knitc::Density d = knitc::density(*args->quality);
     if (cmd->get_option("--sides")->count() == 0) args->compile.sides = d.sides;
     if (cmd->get_option("--tolerance")->count() == 0) args->compile.chord_tolerance = d.chord_tolerance;

@@ -8,6 +8,7 @@
 
 #include "measure/measure.hpp"
 #include "mesh/bounds.hpp"
+#include "tiles/tiles.hpp"
 
 namespace {
 
@@ -51,6 +52,15 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
              fabric.layout.loops.size());
   fmt::print(stderr, "yarn pieces {}\nsamples     {}\nvertices    {}\nindices     {}\n", fabric.pieces.size(), samples,
              vertices, elements);
+  const knitc::tiles::Drawn drawn = knitc::tiles::drawn(fabric.mesh);
+  fmt::print(stderr, "mesh        {}\n", fabric.mesh_choice);
+  if (fabric.instanced)
+    fmt::print(stderr, "drawn       {} triangles, {} vertices ({} stored, {} in the tile, placed {} times)\n", drawn.triangles,
+               drawn.vertices, drawn.stored_vertices, drawn.stored_vertices - vertices, fabric.mesh.instanced.front().translations.size());
+  fmt::print(stderr, "density     {} sides, tolerance {:g} d; {}\n", fabric.density.sides, fabric.density.chord_tolerance,
+             fabric.density_choice);
+  if (!fabric.layout.loops.empty())
+    fmt::print(stderr, "per loop    {:.0f} triangles drawn\n", static_cast<double>(drawn.triangles) / static_cast<double>(fabric.layout.loops.size()));
   fmt::print(stderr, "bounds mm   [{:.3f}, {:.3f}, {:.3f}] .. [{:.3f}, {:.3f}, {:.3f}]\n", lo.x, lo.y, lo.z, hi.x, hi.y,
              hi.z);
   const auto m = knitc::measure::measure(pattern, fabric.layout, fabric.pieces);

@@ -3,8 +3,10 @@
 #include <atomic>
 #include <cassert>
 #include <cmath>
+#include <cstdio>
 
 #include "parallel.hpp"
+#include "tiles/tiles.hpp"
 
 namespace knitc {
 
@@ -17,7 +19,24 @@ Density density(Quality quality) {
   return {12, 0.01};
 }
 
+ViewDensity density_for_view(const layout::Layout& layout, int pixels) {
+  const double width = static_cast<double>(layout.wales) * layout.loop_width;
+  const double height = static_cast<double>(layout.courses) * layout.course_spacing;
+  const double extent = std::max({width, height, layout.loop_width});
+  const double loop = static_cast<double>(pixels) * layout.loop_width / extent;
+  if (loop >= 40.0) return {density(Quality::normal), loop};
+  if (loop >= 16.0) return {{8, 0.025}, loop};
+  return {density(Quality::draft), loop};
+}
+
 namespace {
+
+std::string millions(double n) {
+  char text[32];
+  if (n < 1e5) std::snprintf(text, sizeof text, "%.0f", n);
+  else std::snprintf(text, sizeof text, "%.1f million", n / 1e6);
+  return text;
+}
 
 // "file:line: " of the course at which the fabric passes `share` of its loops: where a
 // fabric too large to make grows past the limit, the line a designer would shorten.
@@ -65,7 +84,9 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
   double per_ring = 1e30;
   for (const Yarn& y : pattern.yarns) per_ring = std::min(per_ring, static_cast<double>(tubes::vertex_count(y, 1000, options.sides)) / 1000.0);
   const double rings_per_loop = 0.5 * 55.0 * std::sqrt(0.01 / options.chord_tolerance);
-  if (static_cast<double>(loops) * rings_per_loop * per_ring > static_cast<double>(max_vertices))
+  const bool may_tile = options.relax && options.view == View::surface && pattern.knitting == Knitting::flat &&
+                        options.instancing != Instancing::flatten;
+  if (static_cast<double>(loops) * rings_per_loop * per_ring > static_cast<double>(max_vertices) && !may_tile)
     too_many_vertices(pattern, static_cast<double>(loops) * rings_per_loop * per_ring, "at least ");
   layout::Layout layout;
   try {
@@ -89,9 +110,24 @@ knit_graph::Graph knit(const Pattern& pattern) {
   }
 }
 
-Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptions& options) {
+Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptions& given) {
   Fabric fabric;
   fabric.layout = std::move(layout);
+  CompileOptions options = given;
+  if (given.density_from_view) {
+    const ViewDensity view = density_for_view(fabric.layout);
+    options.sides = view.density.sides;
+    options.chord_tolerance = view.density.chord_tolerance;
+    char text[160];
+    std::snprintf(text, sizeof text, "from the view: a loop spans %.0f px of a %d px full view", view.loop_pixels, view_pixels);
+    fabric.density_choice = text;
+  } else {
+    fabric.density_choice = "as given";
+  }
+  fabric.density = {options.sides, options.chord_tolerance};
+  // A flat fabric relaxed by its repeat may be instanced: its plain mesh's size is no limit.
+  const bool may_tile = options.relax && options.view == View::surface && fabric.layout.knitting == Knitting::flat &&
+                        options.instancing != Instancing::flatten;
   auto paths = yarn_paths::trace(fabric.layout, options.loop_model);
   const curves::Options curve = curve_options(options);
 
@@ -102,7 +138,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     const auto samples = static_cast<std::size_t>(std::ceil(curves::estimate_samples(path, yarn, curve)));
     estimate += static_cast<double>(tubes::vertex_count(yarn, samples, options.sides));
   }
-  if (estimate > static_cast<double>(max_vertices)) too_many_vertices(pattern, estimate, "about ");
+  if (estimate > static_cast<double>(max_vertices) && !may_tile) too_many_vertices(pattern, estimate, "about ");
 
   if (options.relax) {
     report(options, "relax", 0.0);
@@ -157,9 +193,49 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   std::uint64_t vertices = 0;
   for (const CurvePiece& p : fabric.pieces)
     vertices += tubes::vertex_count(pattern.yarns[p.path.yarn], p.samples.size(), options.sides);
-  if (vertices > max_vertices) too_many_vertices(pattern, static_cast<double>(vertices), "");
-
   report(options, "mesh", 0.0);
+  const bool by_repeat = fabric.relaxed && fabric.relaxation.repeat_wales > 0 && !fabric.tiling_refused &&
+                         options.view == View::surface && fabric.layout.knitting == Knitting::flat;
+  const bool big = vertices > flat_vertices;
+  const std::string flat_size = millions(static_cast<double>(vertices)) + " vertices";
+  std::string declined;
+  if (!by_repeat) {
+    declined = options.view != View::surface             ? "only the surface is instanced"
+               : fabric.layout.knitting != Knitting::flat ? "work in the round is not tiled"
+               : !fabric.relaxed                          ? "not relaxed, so no repeat was tiled"
+               : fabric.tiling_refused                    ? "relaxed whole (tiled, a yarn passed through another)"
+                                                          : "no repeat was found to tile";
+  }
+  if (by_repeat && (options.instancing != Instancing::automatic || big)) {
+    const tiles::Lattice lattice{fabric.relaxation.repeat_wales, fabric.relaxation.repeat_courses, fabric.relaxation.repeat_wale0,
+                                 fabric.relaxation.repeat_course0};
+    tiles::Tiling tiled = tiles::tile(pattern.yarns, fabric.layout, fabric.pieces, lattice, options.sides, options.threads);
+    if (tiled.declined.empty()) {
+      const std::string cells = std::to_string(tiled.cells) + " of " + std::to_string(tiled.complete) + " whole cells of the " +
+                                std::to_string(lattice.wales) + " x " + std::to_string(lattice.courses) + " repeat placed";
+      if (options.instancing == Instancing::flatten) {
+        const tiles::Drawn d = tiles::drawn(tiled.mesh);
+        if (d.vertices > max_vertices) too_many_vertices(pattern, static_cast<double>(d.vertices), "");
+        fabric.mesh = tiles::flatten(tiled.mesh, options.threads);
+        fabric.mesh_choice = "flat (--flatten): every instance written out; " + cells;
+      } else {
+        fabric.mesh = std::move(tiled.mesh);
+        fabric.instanced = true;
+        fabric.mesh_choice = std::string("instanced") +
+                             (options.instancing == Instancing::instance
+                                  ? " (--instance)"
+                                  : ": flat it would be " + flat_size + ", over the " + millions(flat_vertices) + " knitc writes flat") +
+                             "; " + cells;
+      }
+      report(options, "mesh", 1.0);
+      return fabric;
+    }
+    declined = tiled.declined;
+  }
+  if (vertices > max_vertices) too_many_vertices(pattern, static_cast<double>(vertices), "");
+  if (options.instancing == Instancing::flatten) fabric.mesh_choice = "flat (--flatten): " + flat_size;
+  else if (options.instancing == Instancing::instance || big) fabric.mesh_choice = "flat: " + flat_size + "; not instanced: " + declined;
+  else fabric.mesh_choice = "flat: " + flat_size + ", within the " + millions(flat_vertices) + " knitc writes flat";
   fabric.mesh = tubes::build_mesh(pattern.yarns, fabric.pieces, options.view, options.sides, options.threads);
   report(options, "mesh", 1.0);
   return fabric;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "curves/curves.hpp"
@@ -34,6 +35,22 @@ struct Density {
 };
 Density density(Quality quality);  // draft: 6, 5%; normal: 12, 1%; fine: 24, 0.25%
 
+// The density a fabric needs seen whole at `pixels` across (the longer side of the view):
+// how many pixels a loop spans there picks it. A loop of 40 pixels or more is drawn at
+// normal quality, of 16 or more at 8 sides and 2.5%, smaller at draft: a sweater front
+// is not meshed at a swatch close-up's density.
+inline constexpr int view_pixels = 1920;
+struct ViewDensity {
+  Density density;
+  double loop_pixels;
+};
+ViewDensity density_for_view(const layout::Layout& layout, int pixels = view_pixels);
+
+// Whether the repeat of a fabric relaxed by repeat is meshed once and placed many times
+// (tiles/): automatic does it for a fabric whose plain mesh would pass flat_vertices.
+enum class Instancing { automatic, flatten, instance };
+inline constexpr std::uint64_t flat_vertices = 2'000'000;
+
 struct CompileOptions {
   yarn_paths::LoopModel loop_model = yarn_paths::LoopModel::smooth;
   nurbs::Parametrisation parametrisation = nurbs::Parametrisation::chord_length;
@@ -46,6 +63,10 @@ struct CompileOptions {
   bool relax = false;
   relax::Options relaxation;
   int threads = 0;                // 0: every core; the result is the same for any count
+  // Sides and tolerance from the fabric's size in a full view (density_for_view) rather
+  // than the two fields above: what the programs do unless a quality or either is given.
+  bool density_from_view = false;
+  Instancing instancing = Instancing::automatic;
   // Called with a stage's name and how far it is, in [0, 1], from any thread (so it must
   // be thread-safe); for a progress display. It never changes the result.
   std::function<void(const char* stage, double fraction)> progress;
@@ -65,6 +86,12 @@ struct Fabric {
   measure::CrossingChanges crossings;
   // Relaxed whole because, relaxed by repeat, a yarn passed through another.
   bool tiling_refused = false;
+  // The density used, and why (from the view, or as given).
+  Density density{12, 0.01};
+  std::string density_choice;
+  // Which mesh was made, and why: "flat" or "instanced", and the reason in words.
+  bool instanced = false;
+  std::string mesh_choice;
 };
 
 // Whether knitc relaxes a fabric unless told: the smooth model's, so that no two yarn

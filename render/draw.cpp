@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace knitc::render::detail {
@@ -91,8 +92,12 @@ GLenum gl_mode(mesh::Mode mode) {
 }  // namespace
 
 void validate(const mesh::Mesh& mesh) {
-  for (std::size_t i = 0; i < mesh.primitives.size(); ++i) {
-    const auto& p = mesh.primitives[i];
+  std::vector<const mesh::Primitive*> all;
+  for (const auto& p : mesh.primitives) all.push_back(&p);
+  for (const auto& group : mesh.instanced)
+    for (const auto& p : group.primitives) all.push_back(&p);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const auto& p = *all[i];
     const std::string which = "render: primitive " + std::to_string(i);
     if (p.material < 0 || static_cast<std::size_t>(p.material) >= mesh.materials.size())
       throw std::runtime_error(which + " uses material " + std::to_string(p.material) + " of " +
@@ -154,8 +159,22 @@ void MeshDrawer::draw(const mesh::Mesh& mesh, const Camera& camera, float line_w
   gl.UniformMatrix3fv(u_normal_, 1, GL_FALSE, glm::value_ptr(camera.normal));
   gl.LineWidth(line_width);
 
-  for (const auto& p : mesh.primitives) {
+  // The plain primitives, then each instance's tile moved to its place.
+  auto place = [&](const glm::vec3& shift) {
+    const glm::mat4 view = glm::translate(camera.view, shift);
+    const glm::mat4 moved = camera.projection * view;
+    gl.UniformMatrix4fv(u_mvp_, 1, GL_FALSE, glm::value_ptr(moved));
+    gl.UniformMatrix4fv(u_view_, 1, GL_FALSE, glm::value_ptr(view));
+  };
+  std::vector<std::pair<const mesh::Primitive*, const glm::vec3*>> draws;
+  for (const auto& p : mesh.primitives) draws.emplace_back(&p, nullptr);
+  for (const auto& group : mesh.instanced)
+    for (const auto& t : group.translations)
+      for (const auto& p : group.primitives) draws.emplace_back(&p, &t);
+  for (const auto& [primitive, shift] : draws) {
+    const mesh::Primitive& p = *primitive;
     if (p.positions.empty()) continue;
+    if (shift != nullptr) place(*shift);
     const bool is_triangles = p.mode == mesh::Mode::triangles;
     const bool smooth = is_triangles && !p.normals.empty();
     gl.Uniform1i(u_shading_, !is_triangles ? 2 : smooth ? 0 : 1);

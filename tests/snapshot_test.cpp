@@ -35,11 +35,13 @@ TEST(Snapshot, AOneMicrometreChangeOfADataPointShows) {
 TEST(Snapshot, SaysWhatTheFabricIs) {
   const Pattern p = test::jersey(4, 3);
   const std::string s = summary(p, compile(p, CompileOptions{}));
-  EXPECT_EQ(s.rfind("knitc snapshot 1\npattern     jersey\ncourses     4\nwales       4\nloops       16\npieces      1\n", 0), 0u)
+  EXPECT_EQ(s.rfind("knitc snapshot 2\npattern     jersey\ncourses     4\nwales       4\nloops       16\npieces      1\n", 0), 0u)
       << s;
   EXPECT_NE(s.find("\nyarn A mm  "), std::string::npos);
   EXPECT_NE(s.find("\npenetration "), std::string::npos);
   EXPECT_NE(s.find("\ngeometry    fnv1a64 "), std::string::npos);
+  EXPECT_NE(s.find("\nmesh        flat: "), std::string::npos) << s;
+  EXPECT_NE(s.find("\ndensity     12 sides, tolerance 0.0100 d, as given\n"), std::string::npos) << s;
 }
 
 }  // namespace

@@ -25,6 +25,7 @@ set(where_relax     "compiler/relax")
 set(where_sweep     "compiler/sweep")
 set(where_curves    "compiler/curves")
 set(where_tubes     "compiler/tubes")
+set(where_tiles     "compiler/tiles")
 set(where_measure   "compiler/measure")
 set(where_compile   "compiler/compile.hpp;compiler/compile.cpp")
 set(where_writers   "compiler/writers")
@@ -47,8 +48,9 @@ set(uses_relax "yarn_paths;nurbs;spatial;base")
 set(uses_sweep "nurbs;mesh")
 set(uses_curves "sweep;yarn_paths")
 set(uses_tubes "curves;base")
+set(uses_tiles "tubes;base")
 set(uses_measure "curves;spatial")
-set(uses_compile "relax;tubes;measure;base")
+set(uses_compile "relax;tubes;tiles;measure;base")
 set(uses_writers "compile;measure")
 set(uses_language "pattern")
 set(uses_runtime "language")
@@ -56,7 +58,7 @@ set(uses_render "mesh")
 set(uses_bench "writers")
 set(uses_cli "runtime;writers;render;bench")
 
-set(layers base pattern mesh spatial nurbs knit_graph layout yarn_paths relax sweep curves tubes measure compile writers
+set(layers base pattern mesh spatial nurbs knit_graph layout yarn_paths relax sweep curves tubes tiles measure compile writers
     language runtime render bench cli)
 
 # The layer of a file (a path from the root), most specific place first; "" if none.

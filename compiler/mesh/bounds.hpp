@@ -31,10 +31,21 @@ inline Bounds bounds(const Primitive& p) {
   return b;
 }
 
+// The fabric's box: the plain primitives and every placed instance.
 inline Bounds bounds(const Mesh& mesh) {
   Bounds b;
   for (const auto& p : mesh.primitives)
     for (const auto& v : p.positions) b.add(v);
+  for (const auto& group : mesh.instanced) {
+    Bounds tile;
+    for (const auto& p : group.primitives)
+      for (const auto& v : p.positions) tile.add(v);
+    if (tile.empty) continue;
+    for (const auto& t : group.translations) {
+      b.add(tile.min + t);
+      b.add(tile.max + t);
+    }
+  }
   return b;
 }
 

@@ -29,9 +29,17 @@ struct Primitive {
   std::vector<std::uint32_t> indices;
 };
 
+// One mesh drawn many times (glTF's EXT_mesh_gpu_instancing): its primitives in their own
+// frame, and the translation (mm) that places each copy in the fabric.
+struct Instances {
+  std::vector<Primitive> primitives;
+  std::vector<glm::vec3> translations;
+};
+
 struct Mesh {
   std::vector<Material> materials;
   std::vector<Primitive> primitives;
+  std::vector<Instances> instanced;  // empty: every triangle is in `primitives`
 };
 
 }  // namespace knitc::mesh

@@ -83,6 +83,7 @@ struct Stats {
   // tile's sweeps (the others are the edges'), and the share of the yarn's points held as
   // tiled.
   int repeat_wales = 0, repeat_courses = 0, repeat_iterations = 0;
+  int repeat_wale0 = 0, repeat_course0 = 0;  // the tile's first loop in the fabric
   double held_share = 0.0;
 };
 

@@ -440,6 +440,8 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   Relaxed out = relax_chains(layout, chains, sizes, edge_options, &start);
   out.stats.repeat_wales = repeat.wales;
   out.stats.repeat_courses = repeat.courses;
+  out.stats.repeat_wale0 = repeat.wale0;
+  out.stats.repeat_course0 = repeat.course0;
   out.stats.repeat_iterations = relaxed_tile.stats.iterations;
   out.stats.held_share = start.held.empty() ? 0.0
                                             : static_cast<double>(std::count(start.held.begin(), start.held.end(), std::uint8_t{1})) /

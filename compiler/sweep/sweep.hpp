@@ -101,6 +101,25 @@ TubeSize tube_size(std::size_t rings, int sides, std::size_t strands);
 void write_tubes(std::span<const Strand> strands, std::span<const double> arc_length, int sides, mesh::Primitive& out,
                  std::size_t vertex_offset, std::size_t index_offset);
 
+// A stretch of one strand, its rings `first` to `last` (inclusive, last > first), for
+// meshes cut at chosen rings and joined there to another stretch (an instanced tile and
+// the fabric round it): ring i's vertex k sits at angle 2 pi k / sides + phase[i - first]
+// round the section (so a cut's seam is put where both sides of it agree), u is
+// `u[i - first]`, and a cap closes an end only where asked (a cut is open). `offset` is
+// subtracted from every position (a tile's own origin).
+struct Stretch {
+  std::size_t first = 0, last = 0;
+  bool cap_start = true, cap_end = true;
+};
+TubeSize stretch_size(const Stretch& stretch, int sides);
+void write_stretch(const Strand& strand, const Stretch& stretch, std::span<const double> u, std::span<const double> phase,
+                   const glm::dvec3& offset, int sides, mesh::Primitive& out, std::size_t vertex_offset, std::size_t index_offset);
+
+// The angle round strand ring i, in its (normal, binormal) plane, of the direction a cut's
+// seam is put at: the fabric's +Z made square to the tangent (+X where the tangent runs
+// along Z). Both sides of a cut get the same point of the same section from it.
+double seam_angle(const Strand& strand, std::size_t i);
+
 // Appends the strands' rings and long edges as a LINES primitive, like the seed paper's
 // wireframe figure.
 void append_wireframe(std::span<const Strand> strands, int sides, mesh::Primitive& out);

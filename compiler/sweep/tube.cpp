@@ -202,6 +202,67 @@ void write_tubes(std::span<const Strand> strands, std::span<const double> s, int
   assert(c.index - index_offset == tube_size(s.size(), sides, strands.size()).indices);
 }
 
+TubeSize stretch_size(const Stretch& stretch, int sides) {
+  const auto n = static_cast<std::size_t>(sides);
+  const std::size_t rings = stretch.last - stretch.first + 1, caps = (stretch.cap_start ? 1 : 0) + (stretch.cap_end ? 1 : 0);
+  return {rings * (n + 1) + caps * (n + 1), (rings - 1) * n * 6 + caps * n * 3};
+}
+
+double seam_angle(const Strand& strand, std::size_t i) {
+  const Frames& f = strand.frames;
+  const dvec3& t = f.tangent[i];
+  dvec3 c = dvec3(0.0, 0.0, 1.0) - t.z * t;
+  if (glm::length(c) < 0.3) c = dvec3(1.0, 0.0, 0.0) - t.x * t;
+  return std::atan2(glm::dot(c, f.binormal[i]), glm::dot(c, f.normal[i]));
+}
+
+void write_stretch(const Strand& strand, const Stretch& stretch, std::span<const double> u, std::span<const double> phase,
+                   const glm::dvec3& offset, int sides, mesh::Primitive& out, std::size_t vertex_offset, std::size_t index_offset) {
+  assert(sides >= 3 && out.mode == mesh::Mode::triangles && stretch.last > stretch.first);
+  const std::size_t rings = stretch.last - stretch.first + 1;
+  assert(u.size() == rings && phase.size() == rings);
+  const Trig trig(sides);
+  const auto stride = static_cast<std::uint32_t>(sides + 1);
+  Cursor c{out, vertex_offset, index_offset};
+  const Frames& f = strand.frames;
+  const auto base = static_cast<std::uint32_t>(c.vertex);
+  for (std::size_t r = 0; r < rings; ++r) {
+    const std::size_t i = stretch.first + r;
+    const double a = strand.axes.empty() ? strand.along_normal : strand.axes[i].x;
+    const double b = strand.axes.empty() ? strand.along_binormal : strand.axes[i].y;
+    const double cp = std::cos(phase[r]), sp = std::sin(phase[r]);
+    const dvec3 origin = f.origin[i] - offset;
+    const std::uint32_t ring = static_cast<std::uint32_t>(c.vertex);
+    for (int k = 0; k < sides; ++k) {
+      const double ck = trig.cosines[k] * cp - trig.sines[k] * sp, sk = trig.sines[k] * cp + trig.cosines[k] * sp;
+      c.put(glm::vec3(origin + a * ck * f.normal[i] + b * sk * f.binormal[i]),
+            glm::normalize(glm::vec3(b * ck * f.normal[i] + a * sk * f.binormal[i])),
+            glm::vec2(static_cast<float>(u[r]), static_cast<float>(k) / static_cast<float>(sides)));
+    }
+    c.put(c.out.positions[ring], c.out.normals[ring], glm::vec2(static_cast<float>(u[r]), 1.0f));
+  }
+  for (std::size_t r = 0; r + 1 < rings; ++r) {
+    const auto row = base + static_cast<std::uint32_t>(r) * stride;
+    for (int k = 0; k < sides; ++k) {
+      const std::uint32_t a = row + k, b = row + k + 1, cc = a + stride, d = b + stride;
+      c.triangle(a, b, cc);
+      c.triangle(b, d, cc);
+    }
+  }
+  // The caps' centres in the tile's frame too: write_cap reads the frame's origin.
+  if (stretch.cap_start || stretch.cap_end) {
+    Frames ends;
+    for (const std::size_t i : {stretch.first, stretch.last}) {
+      ends.origin.push_back(f.origin[i] - offset);
+      ends.tangent.push_back(f.tangent[i]);
+    }
+    if (stretch.cap_start) write_cap(ends, 0, base, sides, true, c);
+    if (stretch.cap_end) write_cap(ends, 1, base + static_cast<std::uint32_t>(rings - 1) * stride, sides, false, c);
+  }
+  assert(c.vertex - vertex_offset == stretch_size(stretch, sides).vertices);
+  assert(c.index - index_offset == stretch_size(stretch, sides).indices);
+}
+
 void append_tubes(std::span<const Strand> strands, std::span<const double> s, int sides, mesh::Primitive& out) {
   const TubeSize size = tube_size(s.size(), sides, strands.size());
   const std::size_t v = out.positions.size(), i = out.indices.size();

@@ -41,13 +41,14 @@ std::size_t padded(std::size_t n) { return (n + 3) & ~std::size_t{3}; }
 struct Block {
   std::size_t offset = 0, bytes = 0;
   const mesh::Primitive* primitive = nullptr;
-  enum class What { positions, normals, uvs, indices } what = What::positions;
+  enum class What { positions, normals, uvs, indices, vectors } what = What::positions;
   // KHR_mesh_quantization: positions as uint16 in the mesh's box (then the node's scale
   // and translation), normals as normalised int8; 4-byte aligned elements.
   bool quantized = false;
   glm::vec3 lo{0.0f}, step{1.0f};  // mm: position = lo + q * step
   std::size_t element = 4;         // bytes per vertex (or per index)
   std::size_t count = 0;
+  const std::vector<glm::vec3>* vectors = nullptr;  // What::vectors: floats written as they are (instances' TRS)
 };
 
 // A block's bytes as the file holds them uncompressed (for meshopt to encode).
@@ -81,6 +82,10 @@ void write_quantized(const Block& b, std::ostream& out) {
 }
 
 void write_block(const Block& b, std::ostream& out) {
+  if (b.what == Block::What::vectors) {
+    out.write(reinterpret_cast<const char*>(b.vectors->data()), static_cast<std::streamsize>(b.bytes));
+    return;  // 12 bytes a vector: always padded
+  }
   const mesh::Primitive& p = *b.primitive;
   if (b.quantized && (b.what == Block::What::positions || b.what == Block::What::normals)) {
     write_quantized(b, out);
@@ -108,6 +113,7 @@ void write_block(const Block& b, std::ostream& out) {
     case Block::What::indices:
       out.write(reinterpret_cast<const char*>(p.indices.data()), static_cast<std::streamsize>(b.bytes));
       break;
+    case Block::What::vectors: break;
   }
   static constexpr char zeros[4] = {};
   out.write(zeros, static_cast<std::streamsize>(padded(b.bytes) - b.bytes));
@@ -153,7 +159,8 @@ struct BinaryLayout {
   std::size_t bytes = 0;  // the uncompressed binary's length
 };
 
-BinaryLayout lay_out_binary(const mesh::Mesh& mesh, const GlbOptions& options, glm::vec3 box_lo, glm::vec3 step) {
+BinaryLayout lay_out_binary(const std::vector<const mesh::Primitive*>& all, const GlbOptions& options, glm::vec3 box_lo,
+                            glm::vec3 step) {
   BinaryLayout b;
   auto add = [&](const mesh::Primitive& p, Block::What what, std::size_t bytes, int target, json accessor,
                  std::size_t stride = 0) {
@@ -167,7 +174,8 @@ BinaryLayout lay_out_binary(const mesh::Mesh& mesh, const GlbOptions& options, g
     b.bytes += padded(bytes);
     return b.accessors.size() - 1;
   };
-  for (const mesh::Primitive& p : mesh.primitives) {
+  for (const mesh::Primitive* each : all) {
+    const mesh::Primitive& p = *each;
     // In metres, exactly as the values written (scaling by a positive factor keeps order).
     const mesh::Bounds pb = mesh::bounds(p);
     std::array<double, 3> lo, hi;
@@ -284,43 +292,112 @@ void write_chunks(std::ostream& out, std::string text, std::size_t binary, const
 
 void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out, const GlbOptions& options) {
   static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float));
-  if (mesh.primitives.empty()) throw std::runtime_error("glTF needs at least one primitive; the mesh is empty");
-  json doc;
-  doc["asset"] = {{"version", "2.0"}, {"generator", generator}};
-  json used = json::array();
+  std::vector<const mesh::Primitive*> plain, tile;
+  for (const auto& p : mesh.primitives) plain.push_back(&p);
+  const mesh::Instances* instances = nullptr;
+  for (const auto& group : mesh.instanced)
+    if (!group.primitives.empty() && !group.translations.empty()) {
+      if (instances != nullptr) throw std::runtime_error("the writer takes one group of instances");
+      instances = &group;
+      for (const auto& p : group.primitives) tile.push_back(&p);
+    }
+  if (plain.empty() && tile.empty()) throw std::runtime_error("glTF needs at least one primitive; the mesh is empty");
+  // The extensions, in the order earlier files listed them.
+  json used = json::array(), required = json::array();
   if (!mesh.materials.empty()) used.push_back("KHR_materials_sheen");
-  // The quantisation grid: the whole mesh's box in 65535 steps per axis.
-  const mesh::Bounds box = mesh::bounds(mesh);
-  const glm::vec3 box_lo = box.min, box_hi = box.max;
-  const glm::vec3 step = glm::max((box_hi - box_lo) / 65535.0f, glm::vec3(1e-6f));
-  json node = {{"name", "fabric"}, {"mesh", 0}};
+  if (instances != nullptr) {
+    used.push_back("EXT_mesh_gpu_instancing");
+    required.push_back("EXT_mesh_gpu_instancing");
+  }
   if (options.quantize) {
     used.push_back("KHR_mesh_quantization");
-    doc["extensionsRequired"] = json::array({"KHR_mesh_quantization"});
-    node["translation"] = {box_lo.x * metres_per_mm, box_lo.y * metres_per_mm, box_lo.z * metres_per_mm};
-    node["scale"] = {step.x * metres_per_mm, step.y * metres_per_mm, step.z * metres_per_mm};
+    required.push_back("KHR_mesh_quantization");
   }
-  if (!used.empty()) doc["extensionsUsed"] = std::move(used);
-  doc["scene"] = 0;
-  doc["scenes"] = json::array({{{"nodes", json::array({0})}}});
-  doc["nodes"] = json::array({std::move(node)});
-  if (json materials = materials_json(mesh); !materials.empty()) doc["materials"] = std::move(materials);
-
-  BinaryLayout layout = lay_out_binary(mesh, options, box_lo, step);
-  doc["meshes"] = json::array({{{"name", "fabric"}, {"primitives", std::move(layout.primitives)}}});
-  doc["accessors"] = std::move(layout.accessors);
+  if (options.meshopt) {
+    used.push_back("EXT_meshopt_compression");
+    required.push_back("EXT_meshopt_compression");
+  }
+  // The quantisation grid: the box of every stored position (the tile's in its own frame)
+  // in 65535 steps per axis.
+  mesh::Bounds box;
+  for (const auto* p : plain)
+    for (const auto& v : p->positions) box.add(v);
+  for (const auto* p : tile)
+    for (const auto& v : p->positions) box.add(v);
+  const glm::vec3 box_lo = box.min, box_hi = box.max;
+  const glm::vec3 step = glm::max((box_hi - box_lo) / 65535.0f, glm::vec3(1e-6f));
+  std::vector<const mesh::Primitive*> all = plain;
+  all.insert(all.end(), tile.begin(), tile.end());
+  BinaryLayout layout = lay_out_binary(all, options, box_lo, step);
+  json nodes = json::array(), meshes = json::array();
+  if (!plain.empty()) {
+    json node = {{"name", "fabric"}, {"mesh", meshes.size()}};
+    if (options.quantize) {
+      node["translation"] = {box_lo.x * metres_per_mm, box_lo.y * metres_per_mm, box_lo.z * metres_per_mm};
+      node["scale"] = {step.x * metres_per_mm, step.y * metres_per_mm, step.z * metres_per_mm};
+    }
+    meshes.push_back({{"name", "fabric"},
+                      {"primitives", json(std::vector<json>(layout.primitives.begin(), layout.primitives.begin() +
+                                                                                           static_cast<std::ptrdiff_t>(plain.size())))}});
+    nodes.push_back(std::move(node));
+  }
+  // EXT_mesh_gpu_instancing: the tile's mesh once, a translation per cell (metres); the
+  // quantisation's box and step go into each instance's TRS, which applies before the
+  // node's (an identity here).
+  std::vector<glm::vec3> translations, scales;
+  if (instances != nullptr) {
+    for (const glm::vec3& t : instances->translations)
+      translations.push_back((options.quantize ? t + box_lo : t) * metres_per_mm);
+    if (options.quantize) scales.assign(translations.size(), step * metres_per_mm);
+    auto add_vectors = [&](const std::vector<glm::vec3>& v) {
+      const std::size_t bytes = v.size() * sizeof(glm::vec3);
+      layout.blocks.push_back({layout.bytes, bytes, nullptr, Block::What::vectors, false, box_lo, step, 12, v.size(), &v});
+      layout.views.push_back({{"buffer", 0}, {"byteOffset", layout.bytes}, {"byteLength", bytes}});
+      glm::vec3 lo = v.front(), hi = v.front();
+      for (const auto& x : v) {
+        lo = glm::min(lo, x);
+        hi = glm::max(hi, x);
+      }
+      layout.accessors.push_back({{"bufferView", layout.views.size() - 1},
+                                  {"componentType", gl_float},
+                                  {"count", v.size()},
+                                  {"type", "VEC3"},
+                                  {"min", {lo.x, lo.y, lo.z}},
+                                  {"max", {hi.x, hi.y, hi.z}}});
+      layout.bytes += padded(bytes);
+      return layout.accessors.size() - 1;
+    };
+    json attributes = {{"TRANSLATION", add_vectors(translations)}};
+    if (options.quantize) attributes["SCALE"] = add_vectors(scales);
+    meshes.push_back({{"name", "tile"},
+                      {"primitives", json(std::vector<json>(layout.primitives.begin() + static_cast<std::ptrdiff_t>(plain.size()),
+                                                            layout.primitives.end()))}});
+    nodes.push_back({{"name", "tiles"},
+                     {"mesh", meshes.size() - 1},
+                     {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", std::move(attributes)}}}}}});
+  }
   std::vector<std::string> encoded;
   std::size_t binary = layout.bytes;
+  json buffers = json::array({{{"byteLength", layout.bytes}}});
   if (options.meshopt) {
     encoded = encode_meshopt(layout, binary);
     // The uncompressed layout stays as a fallback buffer with no data.
-    doc["extensionsUsed"].push_back("EXT_meshopt_compression");
-    doc["extensionsRequired"].push_back("EXT_meshopt_compression");
-    doc["buffers"] = json::array({{{"byteLength", binary}},
-                                  {{"byteLength", layout.bytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}});
-  } else {
-    doc["buffers"] = json::array({{{"byteLength", layout.bytes}}});
+    buffers = json::array({{{"byteLength", binary}},
+                           {{"byteLength", layout.bytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}});
   }
+  json doc;
+  doc["asset"] = {{"version", "2.0"}, {"generator", generator}};
+  if (!required.empty()) doc["extensionsRequired"] = std::move(required);
+  if (!used.empty()) doc["extensionsUsed"] = std::move(used);
+  json scene_nodes = json::array();
+  for (std::size_t i = 0; i < nodes.size(); ++i) scene_nodes.push_back(i);
+  doc["scene"] = 0;
+  doc["scenes"] = json::array({{{"nodes", std::move(scene_nodes)}}});
+  doc["nodes"] = std::move(nodes);
+  if (json materials = materials_json(mesh); !materials.empty()) doc["materials"] = std::move(materials);
+  doc["meshes"] = std::move(meshes);
+  doc["accessors"] = std::move(layout.accessors);
+  doc["buffers"] = std::move(buffers);
   doc["bufferViews"] = std::move(layout.views);
   write_chunks(out, doc.dump(), binary, layout, encoded, options.meshopt);
 }

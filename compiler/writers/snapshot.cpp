@@ -32,7 +32,7 @@ std::string fixed(double v, int decimals) {
 }  // namespace
 
 std::string snapshot(const Pattern& pattern, const Fabric& fabric, const measure::FabricMeasures& m) {
-  std::string out = "knitc snapshot 1\n";
+  std::string out = "knitc snapshot 2\n";
   out += "pattern     " + pattern.name + "\n";
   out += "courses     " + std::to_string(fabric.layout.courses) + "\n";
   out += "wales       " + std::to_string(fabric.layout.wales) + "\n";
@@ -68,6 +68,25 @@ std::string snapshot(const Pattern& pattern, const Fabric& fabric, const measure
     elements += p.indices.size();
     if (p.mode == mesh::Mode::triangles) triangles += p.indices.size() / 3;
   }
+  // An instanced tile's primitives once and its places: the drawn triangles count each.
+  for (const mesh::Instances& group : fabric.mesh.instanced) {
+    hash.add(group.translations.size());
+    for (const auto& t : group.translations)
+      for (int k = 0; k < 3; ++k) hash.add(static_cast<std::uint64_t>(micrometres(t[k])));
+    for (const mesh::Primitive& p : group.primitives) {
+      hash.add(static_cast<std::uint64_t>(p.material));
+      hash.add(p.positions.size());
+      for (const auto& v : p.positions)
+        for (int k = 0; k < 3; ++k) hash.add(static_cast<std::uint64_t>(micrometres(v[k])));
+      for (std::uint32_t i : p.indices) hash.add(i);
+      vertices += p.positions.size();
+      elements += p.indices.size();
+      triangles += group.translations.size() * (p.indices.size() / 3);
+    }
+  }
+  out += "mesh        " + fabric.mesh_choice + "\n";
+  out += "density     " + std::to_string(fabric.density.sides) + " sides, tolerance " + fixed(fabric.density.chord_tolerance, 4) +
+         " d, " + fabric.density_choice + "\n";
   out += "vertices    " + std::to_string(vertices) + "\n";
   out += "indices     " + std::to_string(elements) + "\n";
   out += "triangles   " + std::to_string(triangles) + "\n";

@@ -1,0 +1,150 @@
+// Opens .glb files with three.js's GLTFLoader in Debian's headless Chromium (software GL)
+// and reports, per file, what a browser client sees: load and first-frame times, meshes,
+// instances, triangles drawn, the scene's box, and the share of a rendered frame the fabric
+// covers. Usage: node show.mjs [--png DIR] FILE.glb...  Prints one JSON object a file, a
+// line each; exits 1 if a file does not load, 2 on misuse.
+//
+// The page and three.js are served from this folder's node_modules by a server on
+// 127.0.0.1 that serves only those files and the named .glb files; nothing is fetched
+// from the network.
+import { createServer } from 'node:http';
+import { readFile, mkdtemp, rm, writeFile } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { join, dirname, basename, resolve, sep } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import puppeteer from 'puppeteer-core';
+
+const here = dirname(fileURLToPath(import.meta.url));
+const args = process.argv.slice(2);
+let pngDir = null;
+if (args[0] === '--png') {
+  pngDir = args[1];
+  args.splice(0, 2);
+}
+if (args.length === 0) {
+  console.error('usage: node show.mjs [--png DIR] FILE.glb...');
+  process.exit(2);
+}
+
+const three = join(here, 'node_modules', 'three');
+const assets = new Map([
+  ['/three.module.js', join(three, 'build', 'three.module.js')],
+  ['/three.core.js', join(three, 'build', 'three.core.js')],
+]);
+args.forEach((file, i) => assets.set(`/file${i}.glb`, file));
+
+const page = `<!doctype html><html><head><meta charset="utf-8">
+<script type="importmap">{"imports": {"three": "/three.module.js"}}</script>
+</head><body style="margin:0;background:#fff"><canvas id="c" width="640" height="480"></canvas>
+<script type="module">
+import * as THREE from 'three';
+import { GLTFLoader } from '/jsm/loaders/GLTFLoader.js';
+import { MeshoptDecoder } from '/jsm/libs/meshopt_decoder.module.js';
+window.show = async (url) => {
+  const t0 = performance.now();
+  const loader = new GLTFLoader().setMeshoptDecoder(MeshoptDecoder);
+  const gltf = await loader.loadAsync(url);
+  const loaded = performance.now() - t0;
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(1, 1, 1);
+  scene.add(gltf.scene);
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x444444, 2.0));
+  const sun = new THREE.DirectionalLight(0xffffff, 2.0);
+  sun.position.set(1, 2, 3);
+  scene.add(sun);
+  let meshes = 0, instanced = 0, instances = 0, triangles = 0;
+  gltf.scene.updateMatrixWorld(true);
+  gltf.scene.traverse((o) => {
+    if (!o.isMesh) return;
+    meshes += 1;
+    const n = o.isInstancedMesh ? o.count : 1;
+    if (o.isInstancedMesh) { instanced += 1; instances += n; o.computeBoundingBox(); o.computeBoundingSphere(); }
+    const index = o.geometry.index;
+    triangles += n * (index ? index.count : o.geometry.attributes.position.count) / 3;
+  });
+  const box = new THREE.Box3().setFromObject(gltf.scene);
+  const size = box.getSize(new THREE.Vector3()), centre = box.getCenter(new THREE.Vector3());
+  const canvas = document.getElementById('c');
+  const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
+  const camera = new THREE.PerspectiveCamera(30, canvas.width / canvas.height, 1e-4, 100);
+  const reach = Math.max(size.x, size.y / (canvas.height / canvas.width)) / 2 / Math.tan(THREE.MathUtils.degToRad(15) * canvas.width / canvas.height);
+  camera.position.set(centre.x, centre.y, centre.z + 1.2 * Math.max(reach, size.y / 2 / Math.tan(THREE.MathUtils.degToRad(15))));
+  camera.lookAt(centre);
+  const gl = renderer.getContext();
+  const t1 = performance.now();
+  renderer.render(scene, camera);
+  const pixels = new Uint8Array(4 * canvas.width * canvas.height);
+  gl.readPixels(0, 0, canvas.width, canvas.height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);  // waits for the frame
+  const drawn = performance.now() - t1;
+  // The fabric's share of the frame: pixels that are not the white background.
+  let fabric = 0;
+  for (let i = 0; i < pixels.length; i += 4) if (pixels[i] < 245 || pixels[i + 1] < 245 || pixels[i + 2] < 245) fabric += 1;
+  const image = canvas.toDataURL('image/png');
+  renderer.dispose();
+  return { load_ms: loaded, frame_ms: drawn, meshes, instanced_meshes: instanced, instances, triangles,
+           min: box.min.toArray(), max: box.max.toArray(), fabric_share: fabric / (canvas.width * canvas.height),
+           webgl: gl.getParameter(gl.VERSION), image };
+};
+window.ready = true;
+</script></body></html>`;
+
+const server = createServer(async (req, res) => {
+  const path = new URL(req.url, 'http://127.0.0.1').pathname;
+  try {
+    if (path === '/') {
+      res.writeHead(200, { 'content-type': 'text/html' }).end(page);
+    } else if (path.startsWith('/jsm/') && path.endsWith('.js')) {
+      // three.js's addons (the loader and what it imports), from their folder only.
+      const root = join(three, 'examples', 'jsm');
+      const file = resolve(root, '.' + decodeURIComponent(path.slice(4)));
+      if (!file.startsWith(root + sep)) throw new Error('outside');
+      res.writeHead(200, { 'content-type': 'text/javascript' }).end(await readFile(file));
+    } else if (assets.has(path)) {
+      const type = path.endsWith('.js') ? 'text/javascript' : 'model/gltf-binary';
+      res.writeHead(200, { 'content-type': type }).end(await readFile(assets.get(path)));
+    } else {
+      res.writeHead(404).end();
+    }
+  } catch {
+    res.writeHead(404).end();
+  }
+});
+await new Promise((ok) => server.listen(0, '127.0.0.1', ok));
+const origin = `http://127.0.0.1:${server.address().port}`;
+const profile = await mkdtemp(join(tmpdir(), 'knitc-chromium-'));
+const browser = await puppeteer.launch({
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+  headless: true,
+  userDataDir: profile,
+  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+         '--disable-component-update', '--disable-sync', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+         '--ignore-gpu-blocklist'],
+});
+let failed = false;
+try {
+  const tab = await browser.newPage();
+  tab.setDefaultTimeout(600000);
+  const problems = [];
+  tab.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+  tab.on('pageerror', (e) => problems.push(String(e)));
+  await tab.goto(origin + '/');
+  await tab.waitForFunction('window.ready === true', { timeout: 30000 }).catch((e) => {
+    throw new Error(`the page did not start: ${problems.join('; ') || e}`);
+  });
+  for (let i = 0; i < args.length; ++i) {
+    try {
+      const r = await tab.evaluate((url) => window.show(url), `/file${i}.glb`);
+      if (pngDir) await writeFile(join(pngDir, basename(args[i]).replace(/\.glb$/, '') + '.browser.png'), Buffer.from(r.image.split(',')[1], 'base64'));
+      delete r.image;
+      console.log(JSON.stringify({ file: args[i], ...r }));
+    } catch (e) {
+      failed = true;
+      console.log(JSON.stringify({ file: args[i], error: String(e) }));
+    }
+  }
+} finally {
+  await browser.close();
+  server.close();
+  await rm(profile, { recursive: true, force: true });
+}
+process.exit(failed ? 1 : 0);
