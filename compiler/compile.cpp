@@ -1,5 +1,6 @@
 #include "compile.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cassert>
 #include <cmath>
@@ -26,7 +27,9 @@ ViewDensity density_for_view(const layout::Layout& layout, int pixels) {
   const double loop = static_cast<double>(pixels) * layout.loop_width / extent;
   if (loop >= 40.0) return {density(Quality::normal), loop};
   if (loop >= 16.0) return {{8, 0.025}, loop};
-  return {density(Quality::draft), loop};
+  // A loop a few pixels across: a chord error of about half a pixel (a loop's width over
+  // 8 on the yarn's diameter, 2 / pixels of it), never finer than draft, at most a quarter.
+  return {{6, std::clamp(2.0 / loop, 0.05, 0.25)}, loop};
 }
 
 namespace {
@@ -63,7 +66,7 @@ std::string where_it_passes(const Pattern& pattern, double share) {
 }
 
 curves::Options curve_options(const CompileOptions& options) {
-  return {options.parametrisation, curves::frame_kind(options.loop_model), options.chord_tolerance};
+  return {options.parametrisation, curves::frame_kind(options.loop_model), options.chord_tolerance, options.threads};
 }
 
 void report(const CompileOptions& options, const char* stage, double fraction) {

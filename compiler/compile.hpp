@@ -37,8 +37,9 @@ Density density(Quality quality);  // draft: 6, 5%; normal: 12, 1%; fine: 24, 0.
 
 // The density a fabric needs seen whole at `pixels` across (the longer side of the view):
 // how many pixels a loop spans there picks it. A loop of 40 pixels or more is drawn at
-// normal quality, of 16 or more at 8 sides and 2.5%, smaller at draft: a sweater front
-// is not meshed at a swatch close-up's density.
+// normal quality, of 16 or more at 8 sides and 2.5%, smaller at 6 sides and a tolerance
+// of 2 / pixels (5% to 25%: about half a pixel): a sweater front is not meshed at a swatch
+// close-up's density.
 inline constexpr int view_pixels = 1920;
 struct ViewDensity {
   Density density;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "parallel.hpp"
+
 namespace knitc::curves {
 
 sweep::FrameKind frame_kind(yarn_paths::LoopModel model) {
@@ -34,18 +36,28 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
   std::sort(breaks.begin(), breaks.end());
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
   std::vector<std::size_t> sample_at(u.size(), 0);  // the sample at each break
+  // The spans between breaks are sampled independently, in parallel, then joined in order.
+  const int threads = thread_count(options.threads);
+  std::vector<std::vector<double>> spans(breaks.size() - 1);
+  parallel_for(spans.size(), threads, [&](std::size_t k) {
+    spans[k] = sweep::sample_parameters(piece.curve.curve, u[breaks[k]], u[breaks[k + 1]], tolerance, 0.5 * d, max_step);
+  });
   piece.samples.push_back(u[0]);
-  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
-    const auto s = sweep::sample_parameters(piece.curve.curve, u[breaks[k]], u[breaks[k + 1]], tolerance, 0.5 * d, max_step);
-    piece.samples.insert(piece.samples.end(), s.begin() + 1, s.end());
+  for (std::size_t k = 0; k < spans.size(); ++k) {
+    piece.samples.insert(piece.samples.end(), spans[k].begin() + 1, spans[k].end());
     sample_at[breaks[k + 1]] = piece.samples.size() - 1;
   }
+  spans = {};
   for (std::size_t j = 0; j < piece.path.loops.size(); ++j)
     piece.loop_samples.emplace_back(sample_at[piece.path.loop_first[j]], sample_at[piece.path.loop_last[j]]);
-  piece.frames = sweep::frames(piece.curve.curve, piece.samples, options.frames);
+  piece.frames = sweep::frames(piece.curve.curve, piece.samples, options.frames, threads);
+  // Each step's length in parallel, then summed in order.
+  std::vector<double> step(piece.samples.size(), 0.0);
+  parallel_for(piece.samples.size() - 1, threads, [&](std::size_t i) {
+    step[i + 1] = nurbs::segment_length(piece.curve.curve, piece.samples[i], piece.samples[i + 1]);
+  });
   piece.arc_length.assign(piece.samples.size(), 0.0);
-  for (std::size_t i = 1; i < piece.samples.size(); ++i)
-    piece.arc_length[i] = piece.arc_length[i - 1] + nurbs::segment_length(piece.curve.curve, piece.samples[i - 1], piece.samples[i]);
+  for (std::size_t i = 1; i < piece.samples.size(); ++i) piece.arc_length[i] = piece.arc_length[i - 1] + step[i];
   if (piece.path.pressed.size() == u.size()) {
     const auto& at = piece.path.pressed;
     piece.pressed.resize(piece.samples.size());

@@ -32,6 +32,9 @@ struct Options {
   nurbs::Parametrisation parametrisation = nurbs::Parametrisation::chord_length;
   sweep::FrameKind frames = sweep::FrameKind::rotation_minimising;
   double chord_tolerance = 0.01;  // of the tube's surface, as a fraction of the yarn diameter, > 0
+  // A long piece's spans are sampled, framed and measured on up to this many threads (0:
+  // every core): the same samples for any count.
+  int threads = 1;
 };
 
 // The frames each loop model sweeps with: Frenet for the paper's, rotation-minimising

@@ -37,8 +37,14 @@ int find_span(const Curve& c, double u) {
   return mid;
 }
 
-void basis_derivatives(const Curve& c, int span, double u, int order, BasisTable& ders) {
-  const int p = c.degree;
+namespace {
+
+// The algorithm with the degree known when compiled (P > 0) or read from the curve (P =
+// 0): the cubic, knitc's every curve, gets its loops unrolled, with the same operations in
+// the same order, so the same bits.
+template <int P>
+void basis_derivatives_of(const Curve& c, int span, double u, int order, BasisTable& ders) {
+  const int p = P > 0 ? P : c.degree;
   assert(p <= max_degree && order <= max_order);
   const auto& U = c.knots;
   double ndu[max_degree + 1][max_degree + 1];
@@ -93,10 +99,35 @@ void basis_derivatives(const Curve& c, int span, double u, int order, BasisTable
   }
 }
 
+}  // namespace
+
+void basis_derivatives(const Curve& c, int span, double u, int order, BasisTable& ders) {
+  if (c.degree == 3) basis_derivatives_of<3>(c, span, u, order, ders);
+  else basis_derivatives_of<0>(c, span, u, order, ders);
+}
+
+namespace {
+
+// A non-rational cubic's derivatives: the basis unrolled, no weights.
+std::array<Point, max_order + 1> cubic_derivatives(const Curve& c, int span, double u, int order) {
+  BasisTable N;
+  basis_derivatives_of<3>(c, span, u, order, N);
+  std::array<Point, max_order + 1> A{};
+  for (int k = 0; k <= order; ++k) {
+    Point a(0.0);
+    for (int j = 0; j <= 3; ++j) a += (N[k][j] * 1.0) * c.points[static_cast<std::size_t>(span - 3 + j)];
+    A[k] = a;
+  }
+  return A;
+}
+
+}  // namespace
+
 std::array<Point, max_order + 1> derivatives(const Curve& c, double u, int order) {
   assert(order >= 0 && order <= max_order);
   const int p = c.degree;
   const int span = find_span(c, u);
+  if (p == 3 && c.weights.empty()) return cubic_derivatives(c, span, u, order);
   BasisTable N;
   basis_derivatives(c, span, u, order, N);
 

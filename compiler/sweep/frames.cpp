@@ -3,6 +3,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "parallel.hpp"
 #include "sweep/sweep.hpp"
 
 namespace knitc::sweep {
@@ -53,7 +54,7 @@ void propagate_rotation_minimising(Frames& f) {
   for (std::size_t i = 0; i < f.size(); ++i) f.binormal[i] = glm::cross(f.tangent[i], f.normal[i]);
 }
 
-Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind kind) {
+Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind kind, int threads) {
   assert(u.size() >= 2);
   const std::size_t count = u.size();
   Frames f;
@@ -61,14 +62,20 @@ Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind ki
   f.tangent.resize(count);
   f.normal.resize(count);
   f.binormal.resize(count);
-  for (std::size_t i = 0; i < count; ++i) {
+  if (kind == FrameKind::rotation_minimising) {
+    // Points and tangents need only the curve: evaluated in parallel.
+    parallel_for(count, thread_count(threads), [&](std::size_t i) {
+      const auto d = nurbs::derivatives(curve, u[i], 1);
+      f.origin[i] = d[0];
+      f.tangent[i] = glm::normalize(d[1]);
+    });
+  }
+  for (std::size_t i = 0; i < count && kind == FrameKind::frenet; ++i) {
     const auto d = nurbs::derivatives(curve, u[i], 2);
     f.origin[i] = d[0];
     f.tangent[i] = glm::normalize(d[1]);
-    if (kind == FrameKind::frenet) {
-      const dvec3 previous = i > 0 ? f.normal[i - 1] : any_perpendicular(f.tangent[i]);
-      f.normal[i] = principal_normal(d[1], d[2], f.tangent[i], previous);
-    }
+    const dvec3 previous = i > 0 ? f.normal[i - 1] : any_perpendicular(f.tangent[i]);
+    f.normal[i] = principal_normal(d[1], d[2], f.tangent[i], previous);
   }
   if (kind == FrameKind::rotation_minimising) {
     const auto d = nurbs::derivatives(curve, u[0], 2);

@@ -43,8 +43,10 @@ struct Frames {
 };
 
 // Frames at the given parameters (at least two). Frenet frames fall back to the previous
-// normal, projected, where the curvature vanishes.
-Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind kind);
+// normal, projected, where the curvature vanishes. The curve is evaluated on up to
+// `threads` threads (0: every core), the rotation-minimising frames then propagated in
+// order: the same frames for any count.
+Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind kind, int threads = 1);
 
 // Given origins, unit tangents and the first normal, fills the other normals by double
 // reflection and every binormal: the rotation-minimising frame of a polyline.
