@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "runtime.hpp"
+#include "tiles/tiles.hpp"
 #include "writers/writers.hpp"
 
 namespace knitc::cli {
@@ -44,11 +45,15 @@ double memcpy_seconds(std::size_t bytes) {
 
 }  // namespace
 
-int bench(int wales, int courses, const CompileOptions& options, bool header) {
-  const std::string source = fmt::format(
-      "pattern {{ name = \"bench\", gauge = {{ loop_width = 4.0, loop_height = 4.2, thickness = 2.0 }},\n"
-      "  yarns = {{ A = {{ diameter = 1.0, color = \"#d9c8a9\" }} }} }}\ncast_on({})\nrows({}, \"k\")\n",
-      wales, courses);
+int bench(int wales, int courses, const CompileOptions& options, bool header, bool flat) {
+  const std::string source =
+      flat ? fmt::format("pattern {{ name = \"bench\", gauge = {{ loop_width = 4.0, loop_height = 4.2, thickness = 2.0 }},\n"
+                         "  yarns = {{ A = {{ diameter = 1.0, color = \"#d9c8a9\" }} }}, knitting = \"flat\" }}\ncast_on({})\n"
+                         "for i = 1, {} do row(i % 2 == 1 and \"k\" or \"p\") end\nbind_off()\n",
+                         wales, courses)
+           : fmt::format("pattern {{ name = \"bench\", gauge = {{ loop_width = 4.0, loop_height = 4.2, thickness = 2.0 }},\n"
+                         "  yarns = {{ A = {{ diameter = 1.0, color = \"#d9c8a9\" }} }} }}\ncast_on({})\nrows({}, \"k\")\n",
+                         wales, courses);
   const auto start = Clock::now();
   const Pattern pattern = runtime::run_pattern(source, "bench.lua").pattern;
   const double script = seconds_since(start);
@@ -77,13 +82,32 @@ int bench(int wales, int courses, const CompileOptions& options, bool header) {
   const auto path = std::filesystem::path(folder) / "bench.glb";
   const auto t2 = Clock::now();
   writers::write_files(std::vector<writers::OutputFile>{
-      {path.string(), [&](std::ostream& out) { writers::write_glb(fabric.mesh, "knitc bench", out); }}});
+      {path.string(), [&](std::ostream& out) {
+         // As `knitc build` writes it: an instanced fabric compressed.
+         writers::write_glb(fabric.mesh, "knitc bench", out, {fabric.instanced, fabric.instanced});
+       }}});
   const double write = seconds_since(t2);
   const double total = seconds_since(start);
   const double peak = peak_mib();  // before the memcpy below, which holds two more copies
   const auto bytes = std::filesystem::file_size(path);
-  std::size_t triangles = 0;
-  for (const auto& p : fabric.mesh.primitives) triangles += p.indices.size() / 3;
+  const std::size_t triangles = tiles::drawn(fabric.mesh).triangles;
+  const bool instanced = fabric.instanced;
+  const Density density = fabric.density;
+  // --flatten's own step, timed against a memcpy of its bytes below: the instances written
+  // out (tiles::flatten) from the instanced mesh it was given.
+  double flatten_seconds = -1.0;
+  std::size_t flatten_bytes = 0;
+  if (options.instancing == Instancing::flatten && fabric.mesh.instanced.empty() && fabric.mesh_choice.find("every instance") != std::string::npos) {
+    CompileOptions again = options;
+    again.instancing = Instancing::instance;
+    again.progress = nullptr;
+    const Fabric tiled = compile(pattern, again);
+    const auto t3 = Clock::now();
+    const mesh::Mesh flat_mesh = tiles::flatten(tiled.mesh, options.threads);
+    flatten_seconds = seconds_since(t3);
+    for (const auto& p : flat_mesh.primitives)
+      flatten_bytes += p.positions.size() * 32 + p.indices.size() * 4;  // position, normal, uv; indices
+  }
   const double loops = static_cast<double>(fabric.layout.loops.size());
   const bool relaxed = fabric.relaxed;
   const int relax_iterations = fabric.relaxation.iterations;
@@ -91,13 +115,17 @@ int bench(int wales, int courses, const CompileOptions& options, bool header) {
   const double copy = memcpy_seconds(bytes);
   if (header) {
     fmt::print("| swatch | sides, tolerance | loops | triangles | .glb MB | script s | mesh s | write s | total s | "
-               "loops/s | triangles/s | mesh / memcpy | peak MiB | relax s | relax iterations |\n"
-               "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+               "loops/s | triangles/s | mesh / memcpy | peak MiB | relax s | relax iterations | mesh | triangles / loop |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   }
-  fmt::print("| {}x{} | {}, {} | {:.0f} | {} | {:.1f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.0f} | {:.3g} | {:.1f} | {:.0f} | {} | {} |\n",
-             wales, courses, options.sides, options.chord_tolerance, loops, triangles, static_cast<double>(bytes) / 1e6,
+  fmt::print("| {}x{} | {}, {} | {:.0f} | {} | {:.1f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.0f} | {:.3g} | {:.1f} | {:.0f} | {} | {} | {} | {:.0f} |{}\n",
+             wales, courses, density.sides, density.chord_tolerance, loops, triangles, static_cast<double>(bytes) / 1e6,
              script, mesh, write, total, loops / total, static_cast<double>(triangles) / total, mesh / copy, peak,
-             relaxed ? fmt::format("{:.3f}", relax_seconds) : "off", relaxed ? std::to_string(relax_iterations) : "");
+             relaxed ? fmt::format("{:.3f}", relax_seconds) : "off", relaxed ? std::to_string(relax_iterations) : "",
+             instanced ? "instanced" : "flat", static_cast<double>(triangles) / loops,
+             flatten_seconds >= 0.0 ? fmt::format(" flatten {:.3f} s, {:.1f} x a memcpy of its {:.0f} MB", flatten_seconds,
+                                                  flatten_seconds / memcpy_seconds(flatten_bytes), static_cast<double>(flatten_bytes) / 1e6)
+                                    : std::string());
   return 0;
 }
 

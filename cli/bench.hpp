@@ -10,6 +10,8 @@ namespace knitc::cli {
 // bytes, the time of each stage, loops and triangles per second, the ratio of mesh
 // generation to a memcpy of the output's bytes timed in the same run, and peak memory.
 // Returns the process exit code.
-int bench(int wales, int courses, const CompileOptions& options, bool header);
+// `flat`: jersey knitted flat and bound off (a garment piece: relaxed by its repeat, and
+// instanced past the size written flat), else in the round (the earlier tables').
+int bench(int wales, int courses, const CompileOptions& options, bool header, bool flat = false);
 
 }  // namespace knitc::cli

@@ -377,7 +377,7 @@ struct Commands {
   CLI::App app{"knitc: compiles knitting pattern scripts into yarn-level 3D fabric", "knitc"};
   Args build, render, snapshot, chart, check, bench;
   std::string bench_size = "150x250";
-  bool bench_header = false;
+  bool bench_header = false, bench_flat = false;
   CLI::App *build_cmd = nullptr, *render_cmd = nullptr, *snapshot_cmd = nullptr, *chart_cmd = nullptr,
            *check_cmd = nullptr, *bench_cmd = nullptr, *reference_cmd = nullptr;
 };
@@ -425,6 +425,9 @@ void declare_commands(Commands& c) {
   c.bench_cmd = app.add_subcommand("bench", "time the whole job on a jersey swatch of WxH loops (one table row)");
   c.bench_cmd->add_option("--swatch", c.bench_size, "wales x courses, e.g. 150x250 (default)");
   c.bench_cmd->add_flag("--header", c.bench_header, "print the table's header first");
+  c.bench_cmd->add_flag("--flat", c.bench_flat,
+                        "jersey knitted flat and bound off, a garment piece (relaxed by repeat, instanced when large), "
+                        "rather than in the round");
   add_compile_options(c.bench_cmd, c.bench);
 
   c.reference_cmd = app.add_subcommand("reference", "print the pattern language reference (docs/language.md)");
@@ -502,7 +505,7 @@ int run_bench(const Commands& c) {
     return exit_usage;
   }
   try {
-    return knitc::cli::bench(size->first, size->second, c.bench.compile, c.bench_header);
+    return knitc::cli::bench(size->first, size->second, c.bench.compile, c.bench_header, c.bench_flat);
   } catch (const knitc::CompileError& e) {
     report(e.what());
     return exit_pattern;

@@ -122,6 +122,85 @@ void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const
   }
 }
 
+// The edges' relaxation needs only what it can move and what it touches: the free points,
+// the held ones within `reach` (mm) of one, and, so that every loop stays whole and a
+// point's neighbours along the yarn are there for bending, whole loops round them. The
+// rest stays where the tile put it. Per piece, its runs of needed points as pieces of
+// their own (a run's own loops), where each run starts in the piece, and their start.
+struct Crop {
+  std::vector<yarn_paths::Piece> pieces;
+  std::vector<std::pair<std::size_t, std::size_t>> origin;  // per run: piece, first point
+  Start start;
+};
+
+Crop crop(const std::vector<yarn_paths::Piece>& chains, const Start& start, double reach) {
+  std::vector<std::size_t> first(chains.size() + 1, 0);
+  for (std::size_t i = 0; i < chains.size(); ++i) first[i + 1] = first[i] + chains[i].data_points.size();
+  std::vector<std::uint8_t> needed(start.pos.size(), 0);
+  spatial::Columns grid(reach);
+  for (std::size_t g = 0; g < start.pos.size(); ++g)
+    if (!start.held[g]) {
+      needed[g] = 1;
+      grid.add(grid.cell_of(start.pos[g]), static_cast<std::uint32_t>(g));
+    }
+  grid.index();
+  for (std::size_t g = 0; g < start.pos.size(); ++g) {
+    if (needed[g]) continue;
+    grid.near(grid.cell_of(start.pos[g]), [&](const spatial::Columns::Entry& e) {
+      if (!needed[g] && glm::distance(start.pos[e.item], start.pos[g]) <= reach) needed[g] = 2;
+    });
+  }
+  Crop out;
+  constexpr std::size_t stencil = 4;  // points either way along the yarn
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    const auto& piece = chains[i];
+    const std::size_t n = piece.data_points.size();
+    std::vector<std::uint8_t> keep(n, 0);
+    for (std::size_t k = 0; k < n; ++k)
+      if (needed[first[i] + k])
+        for (std::size_t u = k >= stencil ? k - stencil : 0; u < std::min(n, k + stencil + 1); ++u) keep[u] = 1;
+    // Whole loops, judged on the points above (loops that meet share a point: judged on
+    // the filled ones, one loop would pull in the next, and so the whole piece).
+    const std::vector<std::uint8_t> touched = keep;
+    for (std::size_t j = 0; j < piece.loops.size(); ++j) {
+      bool any = false;
+      for (std::size_t k = piece.loop_first[j]; k <= piece.loop_last[j] && !any; ++k) any = touched[k] != 0;
+      if (any) std::fill(keep.begin() + static_cast<std::ptrdiff_t>(piece.loop_first[j]),
+                         keep.begin() + static_cast<std::ptrdiff_t>(piece.loop_last[j] + 1), std::uint8_t{1});
+    }
+    std::size_t k = 0, j = 0;
+    while (k < n) {
+      if (!keep[k]) {
+        ++k;
+        continue;
+      }
+      std::size_t end = k;
+      while (end < n && keep[end]) ++end;
+      if (end - k >= 2) {
+        yarn_paths::Piece run;
+        run.yarn = piece.yarn;
+        run.data_points.assign(piece.data_points.begin() + static_cast<std::ptrdiff_t>(k),
+                               piece.data_points.begin() + static_cast<std::ptrdiff_t>(end));
+        while (j < piece.loops.size() && piece.loop_last[j] < k) ++j;
+        for (std::size_t l = j; l < piece.loops.size() && piece.loop_first[l] < end; ++l) {
+          if (piece.loop_first[l] < k || piece.loop_last[l] >= end) continue;
+          run.loops.push_back(piece.loops[l]);
+          run.loop_first.push_back(piece.loop_first[l] - k);
+          run.loop_last.push_back(piece.loop_last[l] - k);
+        }
+        out.start.pos.insert(out.start.pos.end(), start.pos.begin() + static_cast<std::ptrdiff_t>(first[i] + k),
+                             start.pos.begin() + static_cast<std::ptrdiff_t>(first[i] + end));
+        out.start.held.insert(out.start.held.end(), start.held.begin() + static_cast<std::ptrdiff_t>(first[i] + k),
+                              start.held.begin() + static_cast<std::ptrdiff_t>(first[i] + end));
+        out.pieces.push_back(std::move(run));
+        out.origin.emplace_back(i, k);
+      }
+      k = end;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<Repeat> find_repeat(const layout::Layout& layout) {
@@ -423,21 +502,50 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // crossings: it must not leave the yarns deeper into each other than the layout did
   // (pushed back out, a deep overlap may come out on the wrong side). Where it would (the
   // tuck's held loops, blended over the edges), the whole fabric is relaxed instead.
+  // The edges are relaxed on their part of the fabric only (crop): the held interior, most
+  // of a garment, is where the tile put it, and its points cost nothing per sweep. The
+  // check looks at that part too: within the held interior the yarns lie as in the tile.
+  double thickest = 0.0;
+  for (const auto& size : sizes) thickest = std::max(thickest, size.free_diameter);
+  Crop part = crop(chains, start, 3.0 * thickest);
   {
-    Chains c = chains_of(layout, chains, sizes, Boundary::free);
+    Chains c = chains_of(layout, part.pieces, sizes, Boundary::free);
     Contacts contacts(glm::dvec2(0.0), contact_margin * c.thickest, false, thread_count(options.threads));
     contacts.find(c);
     const double laid = contacts.deepest(c);
-    c.pos = start.pos;
+    c.pos = part.start.pos;
     for (std::size_t i = 0; i < c.pos.size(); ++i)
-      if (start.held[i]) c.inv_mass[i] = 0.0;
+      if (part.start.held[i]) c.inv_mass[i] = 0.0;
     contacts.find(c);
     if (contacts.deepest(c) > laid + deeper_by_tiling * c.thickest_core) return std::nullopt;
   }
 
   Options edge_options = options;
   edge_options.by_repeat = false;
-  Relaxed out = relax_chains(layout, chains, sizes, edge_options, &start);
+  Relaxed edges = relax_chains(layout, std::move(part.pieces), sizes, edge_options, &part.start);
+  Relaxed out;
+  out.stats = edges.stats;
+  out.pieces = chains;
+  {
+    std::size_t at = 0;
+    for (auto& piece : out.pieces)
+      for (auto& p : piece.data_points) p = start.pos[at++];
+  }
+  for (std::size_t r = 0; r < edges.pieces.size(); ++r) {
+    const auto [piece, at] = part.origin[r];
+    std::copy(edges.pieces[r].data_points.begin(), edges.pieces[r].data_points.end(),
+              out.pieces[piece].data_points.begin() + static_cast<std::ptrdiff_t>(at));
+  }
+  // The largest change of a whole piece's length, as relax_chains measures its pieces'.
+  out.stats.length_change = 0.0;
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    double laid = 0.0, now = 0.0;
+    for (std::size_t k = 1; k < chains[i].data_points.size(); ++k) {
+      laid += glm::distance(chains[i].data_points[k - 1], chains[i].data_points[k]);
+      now += glm::distance(out.pieces[i].data_points[k - 1], out.pieces[i].data_points[k]);
+    }
+    if (laid > 0.0) out.stats.length_change = std::max(out.stats.length_change, std::abs(now / laid - 1.0));
+  }
   out.stats.repeat_wales = repeat.wales;
   out.stats.repeat_courses = repeat.courses;
   out.stats.repeat_wale0 = repeat.wale0;
