@@ -84,7 +84,7 @@ int bench(int wales, int courses, const CompileOptions& options, bool header, bo
   writers::write_files(std::vector<writers::OutputFile>{
       {path.string(), [&](std::ostream& out) {
          // As `knitc build` writes it: an instanced fabric compressed.
-         writers::write_glb(fabric.mesh, "knitc bench", out, {fabric.instanced, fabric.instanced});
+         writers::write_glb(fabric.mesh, "knitc bench", out, {fabric.instanced, fabric.instanced, options.threads});
        }}});
   const double write = seconds_since(t2);
   const double total = seconds_since(start);

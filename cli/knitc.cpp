@@ -180,7 +180,7 @@ int build(const Args& args) {
   std::vector<knitc::writers::OutputFile> files;
   files.push_back({args.output, [&](std::ostream& out) {
                      const bool small = compressed(args, fabric);
-                     knitc::writers::write_glb(fabric.mesh, "knitc " KNITC_VERSION, out, {small, small});
+                     knitc::writers::write_glb(fabric.mesh, "knitc " KNITC_VERSION, out, {small, small, args.compile.threads});
                    }});
   if (!args.centreline.empty())
     files.push_back(knitc::writers::text_file(args.centreline, knitc::writers::centreline_json(pattern, fabric, args.compile.loop_model)));

@@ -127,6 +127,21 @@ std::uint32_t write_rings(const Strand& strand, std::span<const double> s, const
   return first;
 }
 
+// Two triangles between each pair of consecutive rings (sides + 1 vertices each, from
+// `base`): (i, k), (i, k+1), (i+1, k), (i+1, k+1); the side direction crossed with the
+// tangent points outward.
+void write_quads(std::uint32_t base, std::size_t rings, int sides, Cursor& c) {
+  const auto stride = static_cast<std::uint32_t>(sides + 1);
+  for (std::size_t i = 0; i + 1 < rings; ++i) {
+    const auto row = base + static_cast<std::uint32_t>(i) * stride;
+    for (int k = 0; k < sides; ++k) {
+      const std::uint32_t a = row + k, b = row + k + 1, cc = a + stride, d = b + stride;
+      c.triangle(a, b, cc);
+      c.triangle(b, d, cc);
+    }
+  }
+}
+
 // A flat cap: a centre vertex and a copy of the ring's rim with the cap's normal.
 void write_cap(const Frames& f, std::size_t ring, std::uint32_t rim, int sides, bool at_start, Cursor& c) {
   const glm::vec3 normal(at_start ? -f.tangent[ring] : f.tangent[ring]);
@@ -185,16 +200,7 @@ void write_tubes(std::span<const Strand> strands, std::span<const double> s, int
     assert(f.size() >= 2 && f.size() == s.size());
     const std::uint32_t base = write_rings(strand, s, trig, c);
     const auto rings = f.size();
-    for (std::size_t i = 0; i + 1 < rings; ++i) {
-      const auto row = base + static_cast<std::uint32_t>(i) * stride;
-      for (int k = 0; k < sides; ++k) {
-        // (i, k), (i, k+1), (i+1, k), (i+1, k+1): the side direction crossed with the
-        // tangent points outward.
-        const std::uint32_t a = row + k, b = row + k + 1, cc = a + stride, d = b + stride;
-        c.triangle(a, b, cc);
-        c.triangle(b, d, cc);
-      }
-    }
+    write_quads(base, rings, sides, c);
     write_cap(f, 0, base, sides, true, c);
     write_cap(f, rings - 1, base + static_cast<std::uint32_t>(rings - 1) * stride, sides, false, c);
   }
@@ -241,14 +247,7 @@ void write_stretch(const Strand& strand, const Stretch& stretch, std::span<const
     }
     c.put(c.out.positions[ring], c.out.normals[ring], glm::vec2(static_cast<float>(u[r]), 1.0f));
   }
-  for (std::size_t r = 0; r + 1 < rings; ++r) {
-    const auto row = base + static_cast<std::uint32_t>(r) * stride;
-    for (int k = 0; k < sides; ++k) {
-      const std::uint32_t a = row + k, b = row + k + 1, cc = a + stride, d = b + stride;
-      c.triangle(a, b, cc);
-      c.triangle(b, d, cc);
-    }
-  }
+  write_quads(base, rings, sides, c);
   // The caps' centres in the tile's frame too: write_cap reads the frame's origin.
   if (stretch.cap_start || stretch.cap_end) {
     Frames ends;

@@ -276,21 +276,24 @@ mesh::Mesh flatten(const mesh::Mesh& mesh, int threads) {
     std::size_t material, vertex, index;
   };
   std::vector<Copy> copies;
+  std::vector<std::size_t> vertices(mesh.materials.size(), 0), indices(mesh.materials.size(), 0);
   auto plan = [&](const mesh::Primitive& p, glm::vec3 shift) {
     const auto m = static_cast<std::size_t>(p.material);
     used[m] = 1;
-    copies.push_back({&p, shift, m, by_material[m].positions.size(), by_material[m].indices.size()});
-    by_material[m].positions.resize(by_material[m].positions.size() + p.positions.size());
-    by_material[m].indices.resize(by_material[m].indices.size() + p.indices.size());
+    copies.push_back({&p, shift, m, vertices[m], indices[m]});
+    vertices[m] += p.positions.size();
+    indices[m] += p.indices.size();
   };
   for (const auto& p : mesh.primitives) plan(p, glm::vec3(0.0f));
   for (const auto& group : mesh.instanced)
     for (const glm::vec3& t : group.translations)
       for (const auto& p : group.primitives) plan(p, t);
-  for (std::size_t m = 0; m < by_material.size(); ++m) {
+  for (std::size_t m = 0; m < by_material.size(); ++m) {  // each array sized once
     by_material[m].material = static_cast<int>(m);
-    by_material[m].normals.resize(by_material[m].positions.size());
-    by_material[m].uvs.resize(by_material[m].positions.size());
+    by_material[m].positions.resize(vertices[m]);
+    by_material[m].normals.resize(vertices[m]);
+    by_material[m].uvs.resize(vertices[m]);
+    by_material[m].indices.resize(indices[m]);
   }
   parallel_for(copies.size(), thread_count(threads), [&](std::size_t i) {
     const Copy& c = copies[i];

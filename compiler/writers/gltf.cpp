@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mesh/bounds.hpp"
+#include "parallel.hpp"
 #include "writers/writers.hpp"
 
 namespace knitc::writers {
@@ -226,14 +227,15 @@ BinaryLayout lay_out_binary(const std::vector<const mesh::Primitive*>& all, cons
 // EXT_meshopt_compression: each view's bytes encoded by meshoptimizer into the binary
 // chunk (the views then point there); returns the encoded blobs, and their length in
 // `binary`.
-std::vector<std::string> encode_meshopt(BinaryLayout& layout, std::size_t& binary) {
-  std::vector<std::string> encoded;
-  binary = 0;
-  for (std::size_t i = 0; i < layout.blocks.size(); ++i) {
+std::vector<std::string> encode_meshopt(BinaryLayout& layout, std::size_t& binary, int threads) {
+  // Each view encoded on its own, in parallel (each blob lands in its slot); then placed.
+  std::vector<std::string> encoded(layout.blocks.size());
+  std::vector<const char*> modes(layout.blocks.size(), "ATTRIBUTES");
+  parallel_for(layout.blocks.size(), thread_count(threads), [&](std::size_t i) {
     const Block& b = layout.blocks[i];
     const std::string raw = raw_bytes(b);
     std::string blob;
-    const char* mode = "ATTRIBUTES";
+    const char*& mode = modes[i];
     if (b.what == Block::What::indices) {
       const auto* indices = reinterpret_cast<const unsigned int*>(raw.data());
       const std::size_t vertices = b.primitive->positions.size();
@@ -250,14 +252,20 @@ std::vector<std::string> encode_meshopt(BinaryLayout& layout, std::size_t& binar
       blob.resize(meshopt_encodeVertexBufferBound(b.count, b.element));
       blob.resize(meshopt_encodeVertexBuffer(reinterpret_cast<unsigned char*>(blob.data()), blob.size(), raw.data(), b.count,
                                              b.element));
-      layout.views[i]["byteStride"] = b.element;
     }
+    encoded[i] = std::move(blob);
+  });
+  binary = 0;
+  for (std::size_t i = 0; i < layout.blocks.size(); ++i) {
+    const Block& b = layout.blocks[i];
+    const std::string& blob = encoded[i];
+    const char* mode = modes[i];
+    if (b.what != Block::What::indices) layout.views[i]["byteStride"] = b.element;
     layout.views[i]["buffer"] = 1;
     layout.views[i]["extensions"]["EXT_meshopt_compression"] = {{"buffer", 0},        {"byteOffset", binary},
                                                                 {"byteLength", blob.size()}, {"byteStride", b.element},
                                                                 {"mode", mode},       {"count", b.count}};
     binary += padded(blob.size());
-    encoded.push_back(std::move(blob));
   }
   return encoded;
 }
@@ -380,7 +388,7 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
   std::size_t binary = layout.bytes;
   json buffers = json::array({{{"byteLength", layout.bytes}}});
   if (options.meshopt) {
-    encoded = encode_meshopt(layout, binary);
+    encoded = encode_meshopt(layout, binary, options.threads);
     // The uncompressed layout stays as a fallback buffer with no data.
     buffers = json::array({{{"byteLength", binary}},
                            {{"byteLength", layout.bytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}});

@@ -27,6 +27,7 @@ namespace knitc::writers {
 struct GlbOptions {
   bool quantize = false;
   bool meshopt = false;
+  int threads = 0;  // meshopt encodes the views on up to this many threads (0: every core); the same bytes for any
 };
 void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostream& out, const GlbOptions& options = {});
 std::string glb(const mesh::Mesh& mesh, const std::string& generator, const GlbOptions& options = {});
