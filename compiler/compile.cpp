@@ -207,7 +207,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
                : fabric.layout.knitting != Knitting::flat ? "work in the round is not tiled"
                : !fabric.relaxed                          ? "not relaxed, so no repeat was tiled"
                : fabric.tiling_refused                    ? "relaxed whole (tiled, a yarn passed through another)"
-                                                          : "no repeat was found to tile";
+                                                          : "relaxed whole, not by a repeat (none found, or its tiled start refused: docs/relaxation.md)";
   }
   if (by_repeat && (options.instancing != Instancing::automatic || big)) {
     const tiles::Lattice lattice{fabric.relaxation.repeat_wales, fabric.relaxation.repeat_courses, fabric.relaxation.repeat_wale0,
