@@ -10,6 +10,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 namespace knitc::measure {
 
@@ -49,30 +50,39 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
         grid.add({x, y, 0}, static_cast<std::uint32_t>(s));
   }
   grid.index();
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates;
-  grid.each_column([&](std::span<const spatial::Columns::Entry> list) {
-    for (std::size_t i = 0; i < list.size(); ++i)
-      for (std::size_t j = i + 1; j < list.size(); ++j)
-        candidates.emplace_back(std::min(list[i].item, list[j].item), std::max(list[i].item, list[j].item));
-  });
-  std::sort(candidates.begin(), candidates.end());  // a pair may share several columns: sort, then drop repeats
-  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  for (const auto& [i, j] : candidates) {
+  // A pair may share several columns: it is tested in the first of them only (the lowest
+  // x, then y, the two boxes share), so no list of every pair is kept: on a garment that
+  // list was tens of millions of pairs, its sort most of the time and memory here.
+  auto low_cell = [&](const Segment& g) {
+    const glm::dvec2 lo = glm::min(glm::dvec2(g.p), glm::dvec2(g.q)) / cell;
+    return glm::i64vec2(static_cast<std::int64_t>(std::floor(lo.x)), static_cast<std::int64_t>(std::floor(lo.y)));
+  };
+  auto test = [&](std::uint32_t i, std::uint32_t j) {
     const Segment &a = segments[i], &b = segments[j];
-    if (a.piece == b.piece && (a.index > b.index ? a.index - b.index : b.index - a.index) < near) continue;
+    if (a.piece == b.piece && (a.index > b.index ? a.index - b.index : b.index - a.index) < near) return;
     const glm::dvec2 p(a.p), r = glm::dvec2(a.q) - p, q(b.p), s = glm::dvec2(b.q) - q;
     const double denom = r.x * s.y - r.y * s.x;
-    if (std::abs(denom) < 1e-12 * (glm::dot(r, r) + glm::dot(s, s))) continue;  // parallel
+    if (std::abs(denom) < 1e-12 * (glm::dot(r, r) + glm::dot(s, s))) return;  // parallel
     const glm::dvec2 qp = q - p;
     const double t = (qp.x * s.y - qp.y * s.x) / denom, u = (qp.x * r.y - qp.y * r.x) / denom;
     // Half-open, so a crossing through a shared point counts once: on the segments that
     // start there, with a rounding's slack (two yarns laid through one point, as a twisted
     // stitch's legs are, would otherwise count twice or not at all).
     const double slack = 1e-9;
-    if (t < -slack || t >= 1.0 - slack || u < -slack || u >= 1.0 - slack) continue;
+    if (t < -slack || t >= 1.0 - slack || u < -slack || u >= 1.0 - slack) return;
     const double za = a.p.z + t * (a.q.z - a.p.z), zb = b.p.z + u * (b.q.z - b.p.z);
     out.push_back({a.piece, a.index, b.piece, b.index, za - zb});
-  }
+  };
+  grid.each_column([&](std::span<const spatial::Columns::Entry> list) {
+    if (list.size() < 2) return;
+    const std::uint64_t here = list.front().column;
+    for (std::size_t e = 0; e < list.size(); ++e)
+      for (std::size_t f = e + 1; f < list.size(); ++f) {
+        const std::uint32_t i = std::min(list[e].item, list[f].item), j = std::max(list[e].item, list[f].item);
+        const glm::i64vec2 first = glm::max(low_cell(segments[i]), low_cell(segments[j]));
+        if (spatial::Columns::column_key(first.x, first.y) == here) test(i, j);
+      }
+  });
   std::sort(out.begin(), out.end(), [](const Crossing& x, const Crossing& y) { return order(x) < order(y); });
   return out;
 }
