@@ -69,6 +69,12 @@ curves::Options curve_options(const CompileOptions& options) {
   return {options.parametrisation, curves::frame_kind(options.loop_model), options.chord_tolerance, options.threads};
 }
 
+// A flat fabric relaxed by its repeat may be instanced: then its plain mesh's size, known
+// only once the repeat is tiled, is no reason to refuse it early.
+bool may_tile(const CompileOptions& options, Knitting knitting) {
+  return options.relax && options.view == View::surface && knitting == Knitting::flat && options.instancing != Instancing::flatten;
+}
+
 void report(const CompileOptions& options, const char* stage, double fraction) {
   if (options.progress) options.progress(stage, fraction);
 }
@@ -87,9 +93,7 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
   double per_ring = 1e30;
   for (const Yarn& y : pattern.yarns) per_ring = std::min(per_ring, static_cast<double>(tubes::vertex_count(y, 1000, options.sides)) / 1000.0);
   const double rings_per_loop = 0.5 * 55.0 * std::sqrt(0.01 / options.chord_tolerance);
-  const bool may_tile = options.relax && options.view == View::surface && pattern.knitting == Knitting::flat &&
-                        options.instancing != Instancing::flatten;
-  if (static_cast<double>(loops) * rings_per_loop * per_ring > static_cast<double>(max_vertices) && !may_tile)
+  if (static_cast<double>(loops) * rings_per_loop * per_ring > static_cast<double>(max_vertices) && !may_tile(options, pattern.knitting))
     too_many_vertices(pattern, static_cast<double>(loops) * rings_per_loop * per_ring, "at least ");
   layout::Layout layout;
   try {
@@ -128,9 +132,6 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     fabric.density_choice = "as given";
   }
   fabric.density = {options.sides, options.chord_tolerance};
-  // A flat fabric relaxed by its repeat may be instanced: its plain mesh's size is no limit.
-  const bool may_tile = options.relax && options.view == View::surface && fabric.layout.knitting == Knitting::flat &&
-                        options.instancing != Instancing::flatten;
   auto paths = yarn_paths::trace(fabric.layout, options.loop_model);
   const curves::Options curve = curve_options(options);
 
@@ -141,7 +142,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     const auto samples = static_cast<std::size_t>(std::ceil(curves::estimate_samples(path, yarn, curve)));
     estimate += static_cast<double>(tubes::vertex_count(yarn, samples, options.sides));
   }
-  if (estimate > static_cast<double>(max_vertices) && !may_tile) too_many_vertices(pattern, estimate, "about ");
+  if (estimate > static_cast<double>(max_vertices) && !may_tile(options, fabric.layout.knitting)) too_many_vertices(pattern, estimate, "about ");
 
   if (options.relax) {
     report(options, "relax", 0.0);

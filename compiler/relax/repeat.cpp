@@ -502,9 +502,9 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // crossings: it must not leave the yarns deeper into each other than the layout did
   // (pushed back out, a deep overlap may come out on the wrong side). Where it would (the
   // tuck's held loops, blended over the edges), the whole fabric is relaxed instead.
-  // The edges are relaxed on their part of the fabric only (crop): the held interior, most
-  // of a garment, is where the tile put it, and its points cost nothing per sweep. The
-  // check looks at that part too: within the held interior the yarns lie as in the tile.
+  // The check, and the edges' relaxation after it, look at the edges' part of the fabric
+  // only (crop): the held interior, most of a garment, lies as in the tile, and its points
+  // cost nothing per sweep.
   double thickest = 0.0;
   for (const auto& size : sizes) thickest = std::max(thickest, size.free_diameter);
   Crop part = crop(chains, start, 3.0 * thickest);

@@ -195,16 +195,9 @@ Tiling tile(std::span<const Yarn> yarns, const layout::Layout& layout, std::span
     return out;
   }
 
-  // The materials as tubes::build_mesh makes them; a plain and a tile primitive per yarn.
+  // The materials as the flat mesh has them; a plain and a tile primitive per yarn.
   mesh::Mesh& mesh = out.mesh;
-  std::vector<int> material_of(yarns.size(), -1);
-  for (const auto& p : pieces) material_of[static_cast<std::size_t>(p.path.yarn)] = 0;
-  for (std::size_t y = 0; y < yarns.size(); ++y) {
-    if (material_of[y] < 0) continue;
-    material_of[y] = static_cast<int>(mesh.materials.size());
-    const glm::vec3 colour = tubes::linear_rgb(yarns[y].color);
-    mesh.materials.push_back({yarns[y].id, colour, colour, 0.5f});
-  }
+  const std::vector<int> material_of = tubes::add_materials(yarns, pieces, mesh);
   std::vector<mesh::Primitive> plain(yarns.size()), tile(yarns.size());
   const glm::dvec3 origin = pieces[ref.runs[0].piece].frames.origin[ref.runs[0].from];
 

@@ -59,18 +59,22 @@ mesh::Mode primitive_mode(View view) {
 
 }  // namespace
 
+std::vector<int> add_materials(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, mesh::Mesh& mesh) {
+  std::vector<int> material_of(yarns.size(), -1);
+  for (const curves::CurvePiece& p : pieces) material_of[static_cast<std::size_t>(p.path.yarn)] = 0;
+  for (std::size_t y = 0; y < yarns.size(); ++y) {
+    if (material_of[y] < 0) continue;
+    material_of[y] = static_cast<int>(mesh.materials.size());
+    const glm::vec3 colour = linear_rgb(yarns[y].color);
+    mesh.materials.push_back({yarns[y].id, colour, colour, 0.5f});
+  }
+  return material_of;
+}
+
 mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, View view, int sides,
                       int threads) {
   mesh::Mesh out;
-  // A material for each yarn that is used, in the pattern's yarn order.
-  std::vector<int> material_of(yarns.size(), -1);
-  for (const curves::CurvePiece& p : pieces) material_of[p.path.yarn] = 0;
-  for (std::size_t y = 0; y < yarns.size(); ++y) {
-    if (material_of[y] < 0) continue;
-    material_of[y] = static_cast<int>(out.materials.size());
-    const glm::vec3 colour = linear_rgb(yarns[y].color);
-    out.materials.push_back({yarns[y].id, colour, colour, 0.5f});
-  }
+  const std::vector<int> material_of = add_materials(yarns, pieces, out);
   const mesh::Mode mode = primitive_mode(view);
   if (mode == mesh::Mode::line_strip) {
     // glTF has no primitive restart: a line strip per piece.

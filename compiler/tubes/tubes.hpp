@@ -41,6 +41,10 @@ std::uint64_t vertex_count(const Yarn& yarn, std::size_t samples, int sides);
 // baseColorFactor wants. The string must be valid: the runtime checks it.
 glm::vec3 linear_rgb(const std::string& hex);
 
+// A material per yarn the pieces use, in the pattern's yarn order (base and sheen colour
+// the yarn's); returns each yarn's material index, -1 for a yarn not used.
+std::vector<int> add_materials(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, mesh::Mesh& mesh);
+
 // The mesh of the pieces, each of yarns[piece.path.yarn]: a material per yarn used (in
 // the yarns' order), and per yarn one triangle (surface) or line (wireframe) primitive,
 // or a line strip per piece (centreline). The same bytes for any thread count.
