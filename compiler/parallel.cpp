@@ -1,5 +1,8 @@
 #include "parallel.hpp"
 
+#include <pthread.h>
+#include <csignal>
+
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -35,7 +38,16 @@ class Pool {
     if (!busy.owns_lock()) return false;
     {
       std::lock_guard lock(mutex_);
-      while (workers_.size() + 1 < blocks) workers_.emplace_back([this] { work(); });
+      while (workers_.size() + 1 < blocks)
+        workers_.emplace_back([this] {
+          // Signals go to the threads that called in, never to a worker: a caller that
+          // holds them off (the writers, while a temporary is made and registered) must
+          // not have a worker take one meanwhile.
+          sigset_t all;
+          sigfillset(&all);
+          ::pthread_sigmask(SIG_BLOCK, &all, nullptr);
+          work();
+        });
       job_ = &block;
       blocks_ = blocks;
       next_.store(0);
