@@ -163,13 +163,13 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     if (fabric.layout.knitting == Knitting::flat) {
       double thickest = 0.0;
       for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
-      fabric.crossings = measure::relaxation_changes(laid, relaxed.pieces, thickest);
+      fabric.crossings = measure::relaxation_changes(laid, relaxed.pieces, thickest, options.threads);
       fabric.crossings_checked = true;
       if (relaxed.stats.repeat_wales > 0 && measure::passed_through(fabric.crossings) > 0) {
         relax::Options whole_options = ro;
         whole_options.by_repeat = false;
         auto whole = relax::relax(fabric.layout, laid, sizes, whole_options);
-        auto whole_crossings = measure::relaxation_changes(laid, whole.pieces, thickest);
+        auto whole_crossings = measure::relaxation_changes(laid, whole.pieces, thickest, options.threads);
         if (measure::passed_through(whole_crossings) < measure::passed_through(fabric.crossings)) {
           fabric.tiling_refused = true;
           relaxed = std::move(whole);

@@ -1,9 +1,11 @@
 #include "measure/crossings.hpp"
 
+#include "parallel.hpp"
 #include "spatial/columns.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <tuple>
 #include <unordered_map>
 
@@ -25,7 +27,7 @@ auto order(const Crossing& c) { return std::tie(c.piece_a, c.piece_b, c.segment_
 
 }  // namespace
 
-std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near) {
+std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near, int threads) {
   std::vector<Segment> segments;
   double longest = 0.0;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
@@ -57,7 +59,7 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
     const glm::dvec2 lo = glm::min(glm::dvec2(g.p), glm::dvec2(g.q)) / cell;
     return glm::i64vec2(static_cast<std::int64_t>(std::floor(lo.x)), static_cast<std::int64_t>(std::floor(lo.y)));
   };
-  auto test = [&](std::uint32_t i, std::uint32_t j) {
+  auto test = [&](std::uint32_t i, std::uint32_t j, std::vector<Crossing>& found) {
     const Segment &a = segments[i], &b = segments[j];
     if (a.piece == b.piece && (a.index > b.index ? a.index - b.index : b.index - a.index) < near) return;
     const glm::dvec2 p(a.p), r = glm::dvec2(a.q) - p, q(b.p), s = glm::dvec2(b.q) - q;
@@ -71,18 +73,29 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
     const double slack = 1e-9;
     if (t < -slack || t >= 1.0 - slack || u < -slack || u >= 1.0 - slack) return;
     const double za = a.p.z + t * (a.q.z - a.p.z), zb = b.p.z + u * (b.q.z - b.p.z);
-    out.push_back({a.piece, a.index, b.piece, b.index, za - zb});
+    found.push_back({a.piece, a.index, b.piece, b.index, za - zb});
   };
+  // The columns in blocks, each block's crossings its own list: sorted at the end, so
+  // the same for any thread count.
+  std::vector<std::span<const spatial::Columns::Entry>> columns;
   grid.each_column([&](std::span<const spatial::Columns::Entry> list) {
-    if (list.size() < 2) return;
-    const std::uint64_t here = list.front().column;
-    for (std::size_t e = 0; e < list.size(); ++e)
-      for (std::size_t f = e + 1; f < list.size(); ++f) {
-        const std::uint32_t i = std::min(list[e].item, list[f].item), j = std::max(list[e].item, list[f].item);
-        const glm::i64vec2 first = glm::max(low_cell(segments[i]), low_cell(segments[j]));
-        if (spatial::Columns::column_key(first.x, first.y) == here) test(i, j);
-      }
+    if (list.size() >= 2) columns.push_back(list);
   });
+  const std::size_t blocks = std::min<std::size_t>(columns.size(), 64);
+  std::vector<std::vector<Crossing>> found(blocks);
+  parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
+    for (std::size_t c = columns.size() * b / blocks; c < columns.size() * (b + 1) / blocks; ++c) {
+      const auto list = columns[c];
+      const std::uint64_t here = list.front().column;
+      for (std::size_t e = 0; e < list.size(); ++e)
+        for (std::size_t f = e + 1; f < list.size(); ++f) {
+          const std::uint32_t i = std::min(list[e].item, list[f].item), j = std::max(list[e].item, list[f].item);
+          const glm::i64vec2 first = glm::max(low_cell(segments[i]), low_cell(segments[j]));
+          if (spatial::Columns::column_key(first.x, first.y) == here) test(i, j, found[b]);
+        }
+    }
+  });
+  for (const auto& f : found) out.insert(out.end(), f.begin(), f.end());
   std::sort(out.begin(), out.end(), [](const Crossing& x, const Crossing& y) { return order(x) < order(y); });
   return out;
 }
@@ -187,10 +200,10 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
 }
 
 CrossingChanges relaxation_changes(const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn_paths::Piece>& relaxed,
-                                   double thickest) {
+                                   double thickest, int threads) {
   std::vector<std::uint32_t> segments;
   for (const auto& piece : laid) segments.push_back(piece.data_points.empty() ? 0 : static_cast<std::uint32_t>(piece.data_points.size() - 1));
-  return compare(crossings(laid), crossings(relaxed), 12, 24, thickest, segments);
+  return compare(crossings(laid, 2, threads), crossings(relaxed, 2, threads), 12, 24, thickest, segments);
 }
 
 }  // namespace knitc::measure

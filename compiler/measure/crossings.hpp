@@ -21,7 +21,8 @@ struct Crossing {
 // Every crossing of two segments' projections onto the xy plane, but of two segments of
 // one piece less than `near` data points apart along it (a yarn's own bends). Ordered by
 // (piece_a, piece_b, segment_a, segment_b). A grid of cells one segment long: linear.
-std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near = 2);
+// threads >= 1 (0: every core); the result is the same for any count.
+std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near = 2, int threads = 1);
 
 struct CrossingChanges {
   std::size_t kept = 0;     // matched, same yarn in front
@@ -65,7 +66,7 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
 // yarns lay further apart in depth, a crossing lost or found alone slid away or in. A
 // lone change within 24 segments of a yarn's end is the end's (a tail drawn back).
 CrossingChanges relaxation_changes(const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn_paths::Piece>& relaxed,
-                                   double thickest);
+                                   double thickest, int threads = 1);
 
 // The crossings a yarn passing through another would explain: flipped, or lost or found
 // alone where the two yarns touched.

@@ -65,9 +65,11 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     for (std::size_t i = 0; i + 1 < n; ++i)
       if (p.piece[i] == p.piece[i + 1]) grid.add(grid.cell_of(0.5 * (p.pos[i] + p.pos[i + 1])), static_cast<std::uint32_t>(i));
     grid.index();
-    parallel_for(pieces.size(), thread_count(threads), [&](std::size_t piece) {
-      const std::size_t from = p.first[piece], to = p.first[piece + 1];
-      for (std::size_t i = from; i < to; ++i) {
+    // By blocks of points, not by pieces: a garment is often one piece.
+    constexpr std::size_t block = 4096;
+    parallel_for((n + block - 1) / block, thread_count(threads), [&](std::size_t b) {
+      for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
+        const std::size_t from = p.first[p.piece[i]], to = p.first[p.piece[i] + 1];
         double deepest = 0.0;
         glm::dvec3 normal(0.0);
         grid.near(grid.cell_of(p.pos[i]), [&](const spatial::Columns::Entry& e) {

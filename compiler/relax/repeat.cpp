@@ -81,7 +81,8 @@ int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 // loop's; where two held stretches of yarn still pass into each other (a loop laid out as
 // its tile loop whose neighbours along the yarn are not), both are freed, a loop's length
 // of yarn either way, for the edges' relaxation to clear.
-void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes, Start& start) {
+void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes, Start& start,
+                             int threads) {
   std::vector<double> core, along;
   std::vector<std::uint32_t> piece;
   double thickest = 0.0;
@@ -101,25 +102,29 @@ void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const
   for (std::size_t i = 0; i < start.pos.size(); ++i)
     if (start.held[i]) grid.add(grid.cell_of(start.pos[i]), static_cast<std::uint32_t>(i));
   grid.index();
-  std::vector<std::uint32_t> overlapping;
-  for (std::size_t i = 0; i < start.pos.size(); ++i) {
-    if (!start.held[i]) continue;
-    grid.near(grid.cell_of(start.pos[i]), [&](const spatial::Columns::Entry& e) {
-      const std::size_t j = e.item;
-      if (j <= i) return;
-      if (piece[i] == piece[j] && std::abs(along[i] - along[j]) <= 2.0 * thickest) return;  // one stretch of yarn
-      if (glm::distance(start.pos[i], start.pos[j]) < core[i] + core[j]) {
-        overlapping.push_back(static_cast<std::uint32_t>(i));
-        overlapping.push_back(static_cast<std::uint32_t>(j));
-      }
-    });
-  }
+  const std::size_t n = start.pos.size(), block = 4096, blocks = (n + block - 1) / block;
+  std::vector<std::vector<std::uint32_t>> overlapping(blocks);
+  parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
+    for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
+      if (!start.held[i]) continue;
+      grid.near(grid.cell_of(start.pos[i]), [&](const spatial::Columns::Entry& e) {
+        const std::size_t j = e.item;
+        if (j <= i) return;
+        if (piece[i] == piece[j] && std::abs(along[i] - along[j]) <= 2.0 * thickest) return;  // one stretch of yarn
+        if (glm::distance(start.pos[i], start.pos[j]) < core[i] + core[j]) {
+          overlapping[b].push_back(static_cast<std::uint32_t>(i));
+          overlapping[b].push_back(static_cast<std::uint32_t>(j));
+        }
+      });
+    }
+  });
   constexpr std::size_t reach = 48;  // points either way: about a loop
-  for (const std::uint32_t i : overlapping) {
-    const std::size_t from = i >= reach ? i - reach : 0, to = std::min(start.pos.size(), static_cast<std::size_t>(i) + reach + 1);
-    for (std::size_t k = from; k < to; ++k)
-      if (piece[k] == piece[i]) start.held[k] = 0;
-  }
+  for (const auto& list : overlapping)
+    for (const std::uint32_t i : list) {
+      const std::size_t from = i >= reach ? i - reach : 0, to = std::min(n, static_cast<std::size_t>(i) + reach + 1);
+      for (std::size_t k = from; k < to; ++k)
+        if (piece[k] == piece[i]) start.held[k] = 0;
+    }
 }
 
 // The edges' relaxation needs only what it can move and what it touches: the free points,
@@ -497,7 +502,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
     }
   }
 
-  free_where_held_overlap(chains, sizes, start);
+  free_where_held_overlap(chains, sizes, start, options.threads);
   // Tiling jumps the yarn to where the tile put it, with no sweep between to keep its
   // crossings: it must not leave the yarns deeper into each other than the layout did
   // (pushed back out, a deep overlap may come out on the wrong side). Where it would (the

@@ -1,0 +1,60 @@
+// Large allocations on huge pages. A garment's arrays (a million and more chain points,
+// samples, vertices) are allocated fresh stage after stage; glibc maps each one anew and
+// the kernel zero-fills it 4 KiB at a time, and on a virtual machine each of those page
+// faults is dear: on the sweater front they took about a third of the run. Asking for
+// transparent huge pages on such blocks (madvise, which the kernel's default "madvise"
+// mode honours) faults them in 2 MiB at a time. Nothing else changes: the memory is
+// malloc's, freed by free, and the contents are the same (docs/performance.md).
+//
+// The program's operator new is replaced in the command line only, the one executable a
+// user runs; sanitizer builds keep their own.
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__has_feature)
+#define KNITC_HUGE_PAGES 1
+#elif defined(__has_feature)
+#if !__has_feature(address_sanitizer)
+#define KNITC_HUGE_PAGES 1
+#endif
+#endif
+
+#if defined(KNITC_HUGE_PAGES) && defined(__linux__)
+#include <sys/mman.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <new>
+
+namespace {
+
+constexpr std::size_t huge_page = std::size_t{2} << 20;
+constexpr std::size_t worth_it = std::size_t{8} << 20;  // smaller blocks come from malloc's heap, already faulted
+
+void* allocate(std::size_t size) noexcept {
+  void* p = std::malloc(size == 0 ? 1 : size);
+  if (p && size >= worth_it) {
+    // The whole huge pages inside the block (malloc's large blocks are their own mapping).
+    const auto from = (reinterpret_cast<std::uintptr_t>(p) + huge_page - 1) & ~(huge_page - 1);
+    const auto to = (reinterpret_cast<std::uintptr_t>(p) + size) & ~(huge_page - 1);
+    if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);  // advice: a refusal costs nothing
+  }
+  return p;
+}
+
+}  // namespace
+
+void* operator new(std::size_t size) {
+  if (void* p = allocate(size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) {
+  if (void* p = allocate(size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return allocate(size); }
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return allocate(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+#endif
