@@ -123,10 +123,14 @@ std::array<Point, max_order + 1> cubic_derivatives(const Curve& c, int span, dou
 
 }  // namespace
 
-std::array<Point, max_order + 1> derivatives(const Curve& c, double u, int order) {
+std::array<Point, max_order + 1> derivatives(const Curve& c, double u, int order) { return derivatives(c, find_span(c, u), u, order); }
+
+std::array<Point, max_order + 1> derivatives(const Curve& c, int span, double u, int order) {
   assert(order >= 0 && order <= max_order);
+  // (u may round onto the span's end: there both spans' polynomials agree.)
+  assert(span >= c.degree && static_cast<std::size_t>(span) + 1 < c.knots.size() && c.knots[static_cast<std::size_t>(span)] <= u &&
+         u <= c.knots[static_cast<std::size_t>(span) + 1]);
   const int p = c.degree;
-  const int span = find_span(c, u);
   if (p == 3 && c.weights.empty()) return cubic_derivatives(c, span, u, order);
   BasisTable N;
   basis_derivatives(c, span, u, order, N);

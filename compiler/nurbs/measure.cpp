@@ -7,8 +7,10 @@
 
 namespace knitc::nurbs {
 
-double curvature(const Curve& c, double u) {
-  const auto d = derivatives(c, u, 2);
+double curvature(const Curve& c, double u) { return curvature(c, find_span(c, u), u); }
+
+double curvature(const Curve& c, int span, double u) {
+  const auto d = derivatives(c, span, u, 2);
   const double speed = glm::length(d[1]);
   if (speed == 0.0) return 0.0;
   return glm::length(glm::cross(d[1], d[2])) / (speed * speed * speed);
@@ -57,8 +59,9 @@ double segment_length(const Curve& c, double u0, double u1) {
                            0.2369268850561891};
   auto rule = [&](double a, double b) {
     const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+    const int span = find_span(c, mid);  // the rule's points lie inside one knot span
     double sum = 0.0;
-    for (int i = 0; i < 5; ++i) sum += w[i] * glm::length(derivatives(c, mid + half * x[i], 1)[1]);
+    for (int i = 0; i < 5; ++i) sum += w[i] * glm::length(derivatives(c, span, mid + half * x[i], 1)[1]);
     return sum * half;
   };
   // The speed is only C^(p-1) across a knot: one rule per knot span.

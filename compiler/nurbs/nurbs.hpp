@@ -42,10 +42,15 @@ void basis_derivatives(const Curve& curve, int span, double u, int order, BasisT
 // C(u) and its derivatives d^k C / du^k for k = 0..order (order <= 3), rational
 // derivatives by A4.2. Derivatives above the degree are zero.
 std::array<Point, max_order + 1> derivatives(const Curve& curve, double u, int order);
+// The same, in a span already found: u in [knots[span], knots[span + 1]], as
+// find_span(curve, u) gives it (a caller that evaluates many points inside one knot span
+// finds it once).
+std::array<Point, max_order + 1> derivatives(const Curve& curve, int span, double u, int order);
 Point evaluate(const Curve& curve, double u);
 
 // Curvature |C' x C''| / |C'|^3, in 1/length. Zero where C' vanishes.
 double curvature(const Curve& curve, double u);
+double curvature(const Curve& curve, int span, double u);  // span: find_span(curve, u)
 // Torsion (C' x C'') . C''' / |C' x C''|^2, in 1/length. Zero where C' x C'' vanishes.
 double torsion(const Curve& curve, double u);
 // Arc length of C over [u0, u1] (u0 <= u1), by adaptive Gauss-Legendre quadrature to a

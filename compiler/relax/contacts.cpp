@@ -197,6 +197,10 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
       const glm::i64vec3 cell = grid.columns.cell_of(ma);
       if (held_segment(c, a) && !grid.free_near(cell)) continue;
       const double half_a = 0.5 * glm::distance(c.pos[a], c.pos[a + 1]);
+      // The previous list's pairs of this segment: a few, looked up among themselves.
+      const auto mine_from = std::lower_bound(previous.begin(), previous.end(), a, [](const Pair& x, std::size_t y) { return x.a < y; });
+      auto mine_to = mine_from;
+      while (mine_to != previous.end() && mine_to->a == a) ++mine_to;
       grid.columns.near(cell, [&](const spatial::Columns::Entry& b) {
             const std::size_t bs = b.item;
             if (bs <= a) return;
@@ -214,8 +218,8 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
             if (held == 15) return;  // neither can move: nothing to push
             Pair pair{static_cast<std::uint32_t>(a), b.item, b.sx, b.sy, held, 0, static_cast<float>(c.radius[a] + c.radius[bs]),
                       static_cast<float>(c.shell[a] + c.shell[bs])};
-            const auto known = std::lower_bound(previous.begin(), previous.end(), pair, key_before);
-            if (known != previous.end() && !key_before(pair, *known) && known->side != 0)
+            const auto known = std::lower_bound(mine_from, mine_to, pair, key_before);
+            if (known != mine_to && !key_before(pair, *known) && known->side != 0)
               pair.side = known->side;
             else
               pair.side = side_of(c, pair);
@@ -253,27 +257,39 @@ void Contacts::file_by_strips(const Chains& c, const Grid& grid, const std::vect
   strip_first_.assign(start.begin(), start.begin() + static_cast<std::ptrdiff_t>(strips + 1));
   pairs_.resize(total);
   std::vector<std::size_t> next = std::move(start);
+  // The pairs come found in order of their first segment: each first segment's few put in
+  // (a, b, image) order give the lookup order without sorting them all.
+  by_segments_.resize(total);
   std::size_t i = 0;
   for (const auto& list : found)
-    for (const Pair& p : list) pairs_[next[strip_of_pair[i++]]++] = p;
+    for (const Pair& p : list) {
+      by_segments_[i] = static_cast<std::uint32_t>(next[strip_of_pair[i]]++);
+      pairs_[by_segments_[i]] = p;
+      ++i;
+    }
+  auto before = [&](std::uint32_t x, std::uint32_t y) { return key_before(pairs_[x], pairs_[y]); };
+  for (std::size_t from = 0; from < total;) {
+    std::size_t to = from + 1;
+    while (to < total && pairs_[by_segments_[to]].a == pairs_[by_segments_[from]].a) ++to;
+    std::sort(by_segments_.begin() + static_cast<std::ptrdiff_t>(from), by_segments_.begin() + static_cast<std::ptrdiff_t>(to), before);
+    from = to;
+  }
 }
 
 void Contacts::find(const Chains& c) {
   built_at_ = c.pos;
   // The sides of the pairs listed so far, to look up by (a, b, image).
-  std::vector<Pair> previous = std::move(pairs_);
-  std::sort(previous.begin(), previous.end(), key_before);
+  std::vector<Pair> previous(pairs_.size());
+  for (std::size_t k = 0; k < by_segments_.size(); ++k) previous[k] = pairs_[by_segments_[k]];
   pairs_.clear();
   const Grid grid = grid_of(c);
   if (grid.empty()) {  // nothing takes part
     strip_first_.assign(1, 0);
     across_first_ = 0;
+    by_segments_.clear();
     return;
   }
   file_by_strips(c, grid, close_pairs(c, grid, previous));
-  by_segments_.resize(pairs_.size());
-  for (std::size_t k = 0; k < pairs_.size(); ++k) by_segments_[k] = static_cast<std::uint32_t>(k);
-  std::sort(by_segments_.begin(), by_segments_.end(), [&](std::uint32_t x, std::uint32_t y) { return key_before(pairs_[x], pairs_[y]); });
 }
 
 bool Contacts::stale(const Chains& c) const {

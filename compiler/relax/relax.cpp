@@ -20,9 +20,31 @@ namespace {
 
 // The yarn's own terms, each a sweep along the chains.
 
-// Every segment back to its length: a sweep up the chains, then one down, so a
+// Calls work(from, to) for each piece's points [from, to); the pieces touch no point of
+// another's, so they go in parallel (blocks of pieces about equal in points), unless a
+// strain is summed, whose sum must keep one order.
+template <class Work>
+void each_piece(const Chains& c, int threads, const Strain* strain, Work&& work) {
+  const std::size_t pieces = c.first.size() - 1;
+  if (strain || threads <= 1 || pieces < 2) {
+    for (std::size_t piece = 0; piece < pieces; ++piece) work(c.first[piece], c.first[piece + 1]);
+    return;
+  }
+  const std::size_t blocks = std::min<std::size_t>(pieces, 4 * static_cast<std::size_t>(threads));
+  std::vector<std::size_t> block_first(blocks + 1, pieces);  // the first piece of each block
+  const std::size_t points = c.first.back();
+  for (std::size_t b = 0, piece = 0; b < blocks; ++b) {
+    while (piece < pieces && c.first[piece] < points * b / blocks) ++piece;
+    block_first[b] = piece;
+  }
+  parallel_for(blocks, threads, [&](std::size_t b) {
+    for (std::size_t piece = block_first[b]; piece < block_first[b + 1]; ++piece) work(c.first[piece], c.first[piece + 1]);
+  });
+}
+
+// Every segment back to its length: a sweep up each chain, then one down, so a
 // correction travels the whole yarn in one call rather than a segment per call.
-void keep_lengths(Chains& c, Strain* strain = nullptr) {
+void keep_lengths(Chains& c, int threads, Strain* strain = nullptr) {
   auto keep = [&](std::size_t i) {
     if (!c.segment[i]) return;
     const double wa = c.inv_mass[i], wb = c.inv_mass[i + 1];
@@ -35,8 +57,15 @@ void keep_lengths(Chains& c, Strain* strain = nullptr) {
     c.pos[i] += wa * d;
     c.pos[i + 1] -= wb * d;
   };
-  for (std::size_t i = 0; i + 1 < c.pos.size(); ++i) keep(i);
-  for (std::size_t i = c.pos.size(); i-- > 1;) keep(i - 1);
+  if (strain) {  // all up, then all down: the strain summed in one order
+    for (std::size_t i = 0; i + 1 < c.pos.size(); ++i) keep(i);
+    for (std::size_t i = c.pos.size(); i-- > 1;) keep(i - 1);
+    return;
+  }
+  each_piece(c, threads, strain, [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i + 1 < to; ++i) keep(i);
+    for (std::size_t i = to; i-- > from + 1;) keep(i - 1);
+  });
 }
 
 // Bending: an elastic rod whose rest shape is straight. Every three consecutive points
@@ -44,9 +73,8 @@ void keep_lengths(Chains& c, Strain* strain = nullptr) {
 // the neighbours' midpoint and the neighbours away, keeping their centroid: a step down
 // the gradient of the squared second differences, the discrete rod's bending energy.
 // Held lengths and contacts stop it; what is left opens the loops.
-void bend(Chains& c, double stiffness, Strain* strain = nullptr) {
-  for (std::size_t piece = 0; piece + 1 < c.first.size(); ++piece) {
-    const std::size_t from = c.first[piece], to = c.first[piece + 1];
+void bend(Chains& c, double stiffness, int threads, Strain* strain = nullptr) {
+  each_piece(c, threads, strain, [&](std::size_t from, std::size_t to) {
     for (std::size_t i = from + 1; i + 1 < to; ++i) {
       const glm::dvec3 second = c.pos[i - 1] + c.pos[i + 1] - 2.0 * c.pos[i];
       const double wi = c.inv_mass[i], wa = c.inv_mass[i - 1], wb = c.inv_mass[i + 1];
@@ -62,15 +90,14 @@ void bend(Chains& c, double stiffness, Strain* strain = nullptr) {
       c.pos[i - 1] -= wa * step;
       c.pos[i + 1] -= wb * step;
     }
-  }
+  });
 }
 
 // No bend tighter than `radii` tube radii: where the circle through a point and its two
 // neighbours is smaller, the point moves toward their chord and the neighbours away,
 // keeping the three points' centroid.
-void limit_bends(Chains& c, double radii) {
-  for (std::size_t piece = 0; piece + 1 < c.first.size(); ++piece) {
-    const std::size_t from = c.first[piece], to = c.first[piece + 1];
+void limit_bends(Chains& c, double radii, int threads) {
+  each_piece(c, threads, nullptr, [&](std::size_t from, std::size_t to) {
     for (std::size_t i = from + 1; i + 1 < to; ++i) {
       const glm::dvec3 mid = 0.5 * (c.pos[i - 1] + c.pos[i + 1]);
       const double half_chord = 0.5 * glm::distance(c.pos[i - 1], c.pos[i + 1]);
@@ -87,7 +114,7 @@ void limit_bends(Chains& c, double radii) {
       c.pos[i - 1] -= (0.5 * wa / sum) * move;
       c.pos[i + 1] -= (0.5 * wb / sum) * move;
     }
-  }
+  });
 }
 
 // The sweeps move the fabric as a whole only slowly: a swatch that must draw in by a
@@ -247,7 +274,8 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
     if (layout.knitting == Knitting::flat)
       period = glm::dvec2(layout.wales * layout.loop_width, layout.courses * layout.course_spacing);
   }
-  Contacts contacts(period, contact_margin * c.thickest, layout.knitting == Knitting::round, thread_count(options.threads));
+  const int threads = thread_count(options.threads);
+  Contacts contacts(period, contact_margin * c.thickest, layout.knitting == Knitting::round, threads);
   Size size;
   size.round = layout.knitting == Knitting::round;
   // Held edges keep the swatch's size, and a held interior (a tiled repeat's) keeps it too.
@@ -278,10 +306,10 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
     Strain asked;  // only a periodic repeat's size needs it
     Strain* strain = size.periodic_width || size.periodic_height ? &asked : nullptr;
     const double met = contacts.push_apart(c, contact_skin, scale, scale == 1.0, strain);
-    keep_lengths(c, strain);
-    bend(c, bending_stiffness, strain);
-    limit_bends(c, tightest_bend_radii);
-    for (int pass = 0; pass < length_passes; ++pass) keep_lengths(c, strain);
+    keep_lengths(c, threads, strain);
+    bend(c, bending_stiffness, threads, strain);
+    limit_bends(c, tightest_bend_radii, threads);
+    for (int pass = 0; pass < length_passes; ++pass) keep_lengths(c, threads, strain);
     boost_size(c, before, size, asked, contacts);
     if (start)
       for (const Image& image : start->images)

@@ -16,10 +16,11 @@ struct Cell {
 
 // 3-point Gauss-Legendre estimate of arc length over [a, b]; cells are short and the
 // estimate only sets sample density.
-double cell_length(const nurbs::Curve& c, double a, double b) {
+// span: the knot span holding [a, b).
+double cell_length(const nurbs::Curve& c, int span, double a, double b) {
   constexpr double x = 0.7745966692414834, w0 = 8.0 / 9.0, w1 = 5.0 / 9.0;
   const double h = 0.5 * (b - a), m = 0.5 * (a + b);
-  auto speed = [&](double u) { return glm::length(nurbs::derivatives(c, u, 1)[1]); };
+  auto speed = [&](double u) { return glm::length(nurbs::derivatives(c, span, u, 1)[1]); };
   return h * (w1 * speed(m - h * x) + w0 * speed(m) + w1 * speed(m + h * x));
 }
 
@@ -31,15 +32,26 @@ std::vector<double> sample_parameters(const nurbs::Curve& c, double u0, double u
   constexpr double max_samples = 1 << 22;  // a guard, far above any sane tolerance
   std::vector<Cell> cells;
   double a = u0;
+  // A cell's end is the next one's start: its curvature is kept, not evaluated again.
+  double last_u = NAN, last_k = 0.0;
+  auto curvature = [&](double u) {
+    if (u != last_u) {
+      last_u = u;
+      last_k = nurbs::curvature(c, u);
+    }
+    return last_k;
+  };
   auto add_span = [&](double b) {
+    const int span = nurbs::find_span(c, a);  // [a, b) lies in one knot span; b may start the next
     for (int i = 0; i < cells_per_span; ++i) {
       const double ca = a + (b - a) * i / cells_per_span;
       const double cb = i + 1 == cells_per_span ? b : a + (b - a) * (i + 1) / cells_per_span;
-      double k = 0.0;
-      for (double u : {ca, 0.5 * (ca + cb), cb}) k = std::max(k, nurbs::curvature(c, u));
+      double k = std::max(0.0, curvature(ca));
+      k = std::max(k, nurbs::curvature(c, span, 0.5 * (ca + cb)));
+      k = std::max(k, curvature(cb));
       const double outer = k * (1.0 + radius * k);  // sagitta factor of the outer fibre
       const double step = outer > 0.0 ? std::sqrt(8.0 * tolerance / outer) : INFINITY;
-      cells.push_back({ca, cb, cell_length(c, ca, cb) / std::min(step, max_step)});
+      cells.push_back({ca, cb, cell_length(c, span, ca, cb) / std::min(step, max_step)});
     }
     a = b;
   };
