@@ -18,8 +18,9 @@ namespace knitc::measure {
 
 namespace {
 
+// A segment by where it is: its points are read from the pieces (a garment's copies of
+// them were most of this check's memory).
 struct Segment {
-  glm::dvec3 p, q;
   std::uint32_t piece, index;
 };
 
@@ -30,13 +31,18 @@ auto order(const Crossing& c) { return std::tie(c.piece_a, c.piece_b, c.segment_
 std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near, int threads) {
   std::vector<Segment> segments;
   double longest = 0.0;
+  std::size_t total = 0;
+  for (const auto& piece : pieces) total += piece.data_points.size();
+  segments.reserve(total);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const auto& points = pieces[i].data_points;
     for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-      segments.push_back({points[k], points[k + 1], static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
+      segments.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
       longest = std::max(longest, glm::distance(glm::dvec2(points[k]), glm::dvec2(points[k + 1])));
     }
   }
+  auto p_of = [&](const Segment& g) -> const glm::dvec3& { return pieces[g.piece].data_points[g.index]; };
+  auto q_of = [&](const Segment& g) -> const glm::dvec3& { return pieces[g.piece].data_points[g.index + 1]; };
   std::vector<Crossing> out;
   if (segments.empty() || longest <= 0.0) return out;
   // Each segment in the columns its box covers, seen from the face (at most four: a cell
@@ -45,8 +51,8 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
   spatial::Columns grid(cell);
   grid.reserve(segments.size());
   for (std::size_t s = 0; s < segments.size(); ++s) {
-    const glm::dvec2 lo = glm::min(glm::dvec2(segments[s].p), glm::dvec2(segments[s].q)) / cell;
-    const glm::dvec2 hi = glm::max(glm::dvec2(segments[s].p), glm::dvec2(segments[s].q)) / cell;
+    const glm::dvec2 lo = glm::min(glm::dvec2(p_of(segments[s])), glm::dvec2(q_of(segments[s]))) / cell;
+    const glm::dvec2 hi = glm::max(glm::dvec2(p_of(segments[s])), glm::dvec2(q_of(segments[s]))) / cell;
     for (auto x = static_cast<std::int64_t>(std::floor(lo.x)); x <= static_cast<std::int64_t>(std::floor(hi.x)); ++x)
       for (auto y = static_cast<std::int64_t>(std::floor(lo.y)); y <= static_cast<std::int64_t>(std::floor(hi.y)); ++y)
         grid.add({x, y, 0}, static_cast<std::uint32_t>(s));
@@ -56,13 +62,14 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
   // x, then y, the two boxes share), so no list of every pair is kept: on a garment that
   // list was tens of millions of pairs, its sort most of the time and memory here.
   auto low_cell = [&](const Segment& g) {
-    const glm::dvec2 lo = glm::min(glm::dvec2(g.p), glm::dvec2(g.q)) / cell;
+    const glm::dvec2 lo = glm::min(glm::dvec2(p_of(g)), glm::dvec2(q_of(g))) / cell;
     return glm::i64vec2(static_cast<std::int64_t>(std::floor(lo.x)), static_cast<std::int64_t>(std::floor(lo.y)));
   };
   auto test = [&](std::uint32_t i, std::uint32_t j, std::vector<Crossing>& found) {
     const Segment &a = segments[i], &b = segments[j];
     if (a.piece == b.piece && (a.index > b.index ? a.index - b.index : b.index - a.index) < near) return;
-    const glm::dvec2 p(a.p), r = glm::dvec2(a.q) - p, q(b.p), s = glm::dvec2(b.q) - q;
+    const glm::dvec3 &ap = p_of(a), &aq = q_of(a), &bp = p_of(b), &bq = q_of(b);
+    const glm::dvec2 p(ap), r = glm::dvec2(aq) - p, q(bp), s = glm::dvec2(bq) - q;
     const double denom = r.x * s.y - r.y * s.x;
     if (std::abs(denom) < 1e-12 * (glm::dot(r, r) + glm::dot(s, s))) return;  // parallel
     const glm::dvec2 qp = q - p;
@@ -72,7 +79,7 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
     // stitch's legs are, would otherwise count twice or not at all).
     const double slack = 1e-9;
     if (t < -slack || t >= 1.0 - slack || u < -slack || u >= 1.0 - slack) return;
-    const double za = a.p.z + t * (a.q.z - a.p.z), zb = b.p.z + u * (b.q.z - b.p.z);
+    const double za = ap.z + t * (aq.z - ap.z), zb = bp.z + u * (bq.z - bp.z);
     found.push_back({a.piece, a.index, b.piece, b.index, za - zb});
   };
   // The columns in blocks, each block's crossings its own list: sorted at the end, so

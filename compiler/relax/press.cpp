@@ -16,7 +16,9 @@ namespace {
 struct Points {
   std::vector<glm::dvec3> pos;
   std::vector<double> along;            // mm along its piece
-  std::vector<double> free_r, shell;    // free radius, and free minus core radius, mm
+  std::vector<double> piece_free_r, piece_shell;  // per piece: free radius, and free minus core radius, mm
+  double free_r(std::size_t i) const { return piece_free_r[piece[i]]; }
+  double shell(std::size_t i) const { return piece_shell[piece[i]]; }
   std::vector<std::uint32_t> piece;
   std::vector<std::size_t> first;       // per piece, then the end
 };
@@ -26,13 +28,13 @@ Points points_of(const std::vector<yarn_paths::Piece>& pieces, const std::vector
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     p.first.push_back(p.pos.size());
     const yarn::Size& size = sizes[static_cast<std::size_t>(pieces[i].yarn)];
+    p.piece_free_r.push_back(0.5 * size.free_diameter);
+    p.piece_shell.push_back(0.5 * (size.free_diameter - size.core_diameter));
     double s = 0.0;
     for (std::size_t k = 0; k < pieces[i].data_points.size(); ++k) {
       if (k > 0) s += glm::distance(pieces[i].data_points[k - 1], pieces[i].data_points[k]);
       p.pos.push_back(pieces[i].data_points[k]);
       p.along.push_back(s);
-      p.free_r.push_back(0.5 * size.free_diameter);
-      p.shell.push_back(0.5 * (size.free_diameter - size.core_diameter));
       p.piece.push_back(static_cast<std::uint32_t>(i));
     }
   }
@@ -55,7 +57,7 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
   const std::size_t n = p.pos.size();
   std::vector<glm::dvec3> pressed(n, glm::dvec3(0.0));
   double thickest = 0.0, longest = 0.0;
-  for (std::size_t i = 0; i < n; ++i) thickest = std::max(thickest, 2.0 * p.free_r[i]);
+  for (std::size_t i = 0; i < n; ++i) thickest = std::max(thickest, 2.0 * p.free_r(i));
   for (std::size_t i = 0; i + 1 < n; ++i)
     if (p.piece[i] == p.piece[i + 1]) longest = std::max(longest, glm::distance(p.pos[i], p.pos[i + 1]));
   if (thickest > 0.0 && n > 1) {
@@ -75,17 +77,17 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
         grid.near(grid.cell_of(p.pos[i]), [&](const spatial::Columns::Entry& e) {
           const std::size_t j = e.item;
           const double along_j = 0.5 * (p.along[j] + p.along[j + 1]);
-          if (p.piece[j] == p.piece[i] && std::abs(along_j - p.along[i]) <= 1.8 * (p.free_r[i] + p.free_r[j])) return;
+          if (p.piece[j] == p.piece[i] && std::abs(along_j - p.along[i]) <= 1.8 * (p.free_r(i) + p.free_r(j))) return;
           const glm::dvec3 seg = p.pos[j + 1] - p.pos[j];
           const double len2 = glm::dot(seg, seg);
           const double t = len2 > 0.0 ? std::clamp(glm::dot(p.pos[i] - p.pos[j], seg) / len2, 0.0, 1.0) : 0.0;
           const glm::dvec3 away = p.pos[i] - (p.pos[j] + t * seg);
           const double dist = glm::length(away);
-          const double overlap = p.free_r[i] + p.free_r[j] - dist;
+          const double overlap = p.free_r(i) + p.free_r(j) - dist;
           if (overlap <= 0.0 || dist <= 0.0) return;
           // This yarn's share of the overlap, as its shell's share of the two shells.
-          const double shells = p.shell[i] + p.shell[j];
-          const double share = shells > 0.0 ? overlap * p.shell[i] / shells : 0.5 * overlap;
+          const double shells = p.shell(i) + p.shell(j);
+          const double share = shells > 0.0 ? overlap * p.shell(i) / shells : 0.5 * overlap;
           if (share > deepest) {
             deepest = share;
             normal = away / dist;
@@ -96,8 +98,8 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
         glm::dvec3 across = normal - glm::dot(normal, t) * t;
         const double l = glm::length(across);
         if (l < 1e-6) continue;
-        const double minor = std::max(p.free_r[i] - deepest, p.free_r[i] - p.shell[i]);
-        const double aspect = std::max(flattest_aspect, (minor / p.free_r[i]) * (minor / p.free_r[i]));
+        const double minor = std::max(p.free_r(i) - deepest, p.free_r(i) - p.shell(i));
+        const double aspect = std::max(flattest_aspect, (minor / p.free_r(i)) * (minor / p.free_r(i)));
         pressed[i] = (1.0 - aspect) * across / l;
       }
     });

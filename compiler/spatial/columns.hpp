@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -44,20 +45,17 @@ class Columns {
 
   // After the last add: sorts the entries and maps each column to its run of them.
   void index() {
-    std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) {
-      return a.column != b.column ? a.column < b.column
-             : a.z != b.z         ? a.z < b.z
-             : a.item != b.item   ? a.item < b.item
-             : a.sx != b.sx       ? a.sx < b.sx
-                                  : a.sy < b.sy;
-    });
+    dense_.clear();
     columns_.clear();
-    columns_.reserve(entries_.size() / 4 + 1);
-    for (std::size_t i = 0; i < entries_.size();) {
-      std::size_t j = i;
-      while (j < entries_.size() && entries_[j].column == entries_[i].column) ++j;
-      columns_.emplace(entries_[i].column, std::make_pair(i, j));
-      i = j;
+    if (!index_densely()) {
+      std::sort(entries_.begin(), entries_.end(), before);
+      columns_.reserve(entries_.size() / 4 + 1);
+      for (std::size_t i = 0; i < entries_.size();) {
+        std::size_t j = i;
+        while (j < entries_.size() && entries_[j].column == entries_[i].column) ++j;
+        columns_.emplace(entries_[i].column, std::make_pair(i, j));
+        i = j;
+      }
     }
   }
 
@@ -67,9 +65,8 @@ class Columns {
   void near(const glm::i64vec3& cell, Visit&& visit) const {
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy) {
-        const auto hit = columns_.find(column_key(cell.x + dx, cell.y + dy));
-        if (hit == columns_.end()) continue;
-        for (std::size_t e = hit->second.first; e < hit->second.second; ++e) {
+        const auto [first, last] = column(cell.x + dx, cell.y + dy);
+        for (std::size_t e = first; e < last; ++e) {
           const Entry& entry = entries_[e];
           if (entry.z < cell.z - 1) continue;
           if (entry.z > cell.z + 1) break;
@@ -90,9 +87,65 @@ class Columns {
   }
 
  private:
+  static bool before(const Entry& a, const Entry& b) {
+    return a.column != b.column ? a.column < b.column
+           : a.z != b.z         ? a.z < b.z
+           : a.item != b.item   ? a.item < b.item
+           : a.sx != b.sx       ? a.sx < b.sx
+                                : a.sy < b.sy;
+  }
+  static bool same_place_before(const Entry& a, const Entry& b) { return a.item != b.item ? a.item < b.item : a.sx != b.sx ? a.sx < b.sx : a.sy < b.sy; }
+
+  // The entries of column (x, y): a range of entries_, empty if none.
+  std::pair<std::size_t, std::size_t> column(std::int64_t x, std::int64_t y) const {
+    if (!dense_.empty()) {
+      if (x < x0_ || y < y0_ || x - x0_ >= nx_ || y - y0_ >= ny_) return {0, 0};
+      const auto at = static_cast<std::size_t>((x - x0_) * ny_ + (y - y0_));
+      return {dense_[at], dense_[at + 1]};
+    }
+    const auto hit = columns_.find(column_key(x, y));
+    return hit == columns_.end() ? std::pair<std::size_t, std::size_t>{0, 0} : hit->second;
+  }
+
+  // Where the columns are few for the entries (a fabric, not a scatter) and the entries
+  // came in the order the sort would leave equal places in (item, image), a counting sort
+  // by column, then by z within each, gives the same order without comparing them all, and
+  // a table of every column's run replaces the map. False (nothing done) otherwise.
+  bool index_densely() {
+    const std::size_t n = entries_.size();
+    if (n == 0) return false;
+    for (std::size_t i = 1; i < n; ++i)
+      if (same_place_before(entries_[i], entries_[i - 1])) return false;
+    std::int64_t xl = INT64_MAX, xh = INT64_MIN, yl = INT64_MAX, yh = INT64_MIN;
+    for (const Entry& e : entries_) {
+      const auto x = static_cast<std::int64_t>(e.column >> 32), y = static_cast<std::int64_t>(e.column & 0xffffffffu);
+      xl = std::min(xl, x), xh = std::max(xh, x), yl = std::min(yl, y), yh = std::max(yh, y);
+    }
+    const auto cols = static_cast<double>(xh - xl + 1) * static_cast<double>(yh - yl + 1);
+    if (cols > 4.0 * static_cast<double>(n) + 4096.0) return false;
+    x0_ = xl - (std::int64_t{1} << 31), y0_ = yl - (std::int64_t{1} << 31), nx_ = xh - xl + 1, ny_ = yh - yl + 1;
+    auto slot = [&](const Entry& e) {
+      return static_cast<std::size_t>((static_cast<std::int64_t>(e.column >> 32) - xl) * ny_ +
+                                      (static_cast<std::int64_t>(e.column & 0xffffffffu) - yl));
+    };
+    dense_.assign(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
+    for (const Entry& e : entries_) ++dense_[slot(e) + 1];
+    for (std::size_t k = 1; k < dense_.size(); ++k) dense_[k] += dense_[k - 1];
+    std::vector<Entry> sorted(n);
+    std::vector<std::size_t> next(dense_.begin(), dense_.end() - 1);
+    for (const Entry& e : entries_) sorted[next[slot(e)]++] = e;  // stable: each column in the order added
+    for (std::size_t k = 0; k + 1 < dense_.size(); ++k)  // by z, by insertion (stable; a column holds a few)
+      for (std::size_t i = dense_[k] + 1; i < dense_[k + 1]; ++i)
+        for (std::size_t j = i; j > dense_[k] && sorted[j].z < sorted[j - 1].z; --j) std::swap(sorted[j], sorted[j - 1]);
+    entries_ = std::move(sorted);
+    return true;
+  }
+
   double cell_;
   std::vector<Entry> entries_;
-  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> columns_;
+  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> columns_;  // when not dense
+  std::vector<std::size_t> dense_;  // when dense: column (x, y)'s entries from dense_[(x - x0_) * ny_ + y - y0_] to the next
+  std::int64_t x0_ = 0, y0_ = 0, nx_ = 0, ny_ = 0;
 };
 
 }  // namespace knitc::spatial
