@@ -281,22 +281,42 @@ mesh::Mesh flatten(const mesh::Mesh& mesh, int threads) {
   for (const auto& group : mesh.instanced)
     for (const glm::vec3& t : group.translations)
       for (const auto& p : group.primitives) plan(p, t);
-  for (std::size_t m = 0; m < by_material.size(); ++m) {  // each array sized once
-    by_material[m].material = static_cast<int>(m);
-    by_material[m].positions.resize(vertices[m]);
-    by_material[m].normals.resize(vertices[m]);
-    by_material[m].uvs.resize(vertices[m]);
-    by_material[m].indices.resize(indices[m]);
-  }
-  parallel_for(copies.size(), thread_count(threads), [&](std::size_t i) {
-    const Copy& c = copies[i];
-    mesh::Primitive& to = by_material[c.material];
-    const mesh::Primitive& from = *c.from;
-    for (std::size_t v = 0; v < from.positions.size(); ++v) to.positions[c.vertex + v] = from.positions[v] + c.shift;
-    std::copy(from.normals.begin(), from.normals.end(), to.normals.begin() + static_cast<std::ptrdiff_t>(c.vertex));
-    std::copy(from.uvs.begin(), from.uvs.end(), to.uvs.begin() + static_cast<std::ptrdiff_t>(c.vertex));
-    const auto base = static_cast<std::uint32_t>(c.vertex);
-    for (std::size_t k = 0; k < from.indices.size(); ++k) to.indices[c.index + k] = from.indices[k] + base;
+  // Each array reserved once and appended to, copy by copy: written once, never zero-filled
+  // first (a garment's are a gigabyte and more); the arrays are built side by side.
+  for (std::size_t m = 0; m < by_material.size(); ++m) by_material[m].material = static_cast<int>(m);
+  parallel_for(4 * by_material.size(), thread_count(threads), [&](std::size_t task) {
+    const std::size_t m = task / 4;
+    mesh::Primitive& to = by_material[m];
+    switch (task % 4) {
+      case 0:
+        to.positions.reserve(vertices[m]);
+        for (const Copy& c : copies)
+          if (c.material == m) {
+            const std::size_t at = to.positions.size();
+            to.positions.insert(to.positions.end(), c.from->positions.begin(), c.from->positions.end());
+            for (std::size_t v = at; v < to.positions.size(); ++v) to.positions[v] += c.shift;
+          }
+        break;
+      case 1:
+        to.normals.reserve(vertices[m]);
+        for (const Copy& c : copies)
+          if (c.material == m) to.normals.insert(to.normals.end(), c.from->normals.begin(), c.from->normals.end());
+        break;
+      case 2:
+        to.uvs.reserve(vertices[m]);
+        for (const Copy& c : copies)
+          if (c.material == m) to.uvs.insert(to.uvs.end(), c.from->uvs.begin(), c.from->uvs.end());
+        break;
+      default:
+        to.indices.reserve(indices[m]);
+        for (const Copy& c : copies)
+          if (c.material == m) {
+            const std::size_t at = to.indices.size();
+            const auto base = static_cast<std::uint32_t>(c.vertex);
+            to.indices.insert(to.indices.end(), c.from->indices.begin(), c.from->indices.end());
+            for (std::size_t k = at; k < to.indices.size(); ++k) to.indices[k] += base;
+          }
+    }
   });
   for (std::size_t m = 0; m < by_material.size(); ++m)
     if (used[m] && !by_material[m].indices.empty()) out.primitives.push_back(std::move(by_material[m]));
