@@ -9,6 +9,7 @@
 // from the network.
 import { createServer } from 'node:http';
 import { readFile, mkdtemp, rm, writeFile } from 'node:fs/promises';
+import { existsSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, dirname, basename, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -21,9 +22,15 @@ if (args[0] === '--png') {
   pngDir = args[1];
   args.splice(0, 2);
 }
-if (args.length === 0) {
+if (args.length === 0 || args.some((a) => a.startsWith('-'))) {
   console.error('usage: node show.mjs [--png DIR] FILE.glb...');
   process.exit(2);
+}
+for (const file of args) {
+  if (!existsSync(file)) {
+    console.error(`show.mjs: ${file}: no such file`);
+    process.exit(2);
+  }
 }
 
 const three = join(here, 'node_modules', 'three');
@@ -98,10 +105,12 @@ const server = createServer(async (req, res) => {
       const root = join(three, 'examples', 'jsm');
       const file = resolve(root, '.' + decodeURIComponent(path.slice(4)));
       if (!file.startsWith(root + sep)) throw new Error('outside');
-      res.writeHead(200, { 'content-type': 'text/javascript' }).end(await readFile(file));
+      const body = await readFile(file);  // read first: a missing file is a 404, not a second header
+      res.writeHead(200, { 'content-type': 'text/javascript' }).end(body);
     } else if (assets.has(path)) {
       const type = path.endsWith('.js') ? 'text/javascript' : 'model/gltf-binary';
-      res.writeHead(200, { 'content-type': type }).end(await readFile(assets.get(path)));
+      const body = await readFile(assets.get(path));
+      res.writeHead(200, { 'content-type': type }).end(body);
     } else {
       res.writeHead(404).end();
     }
