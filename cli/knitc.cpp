@@ -28,6 +28,7 @@
 #include "bench.hpp"
 #include "printed.hpp"
 #include "stats.hpp"
+#include "view.hpp"
 #include "compile.hpp"
 #include "measure/measure.hpp"
 #include "render.hpp"
@@ -375,11 +376,13 @@ namespace {
 // Every subcommand and the arguments it fills.
 struct Commands {
   CLI::App app{"knitc: compiles knitting pattern scripts into yarn-level 3D fabric", "knitc"};
-  Args build, render, snapshot, chart, check, bench;
+  Args build, render, snapshot, chart, check, bench, view;
+  int view_port = 0;
+  bool view_no_open = false;
   std::string bench_size = "150x250";
   bool bench_header = false, bench_flat = false;
   CLI::App *build_cmd = nullptr, *render_cmd = nullptr, *snapshot_cmd = nullptr, *chart_cmd = nullptr,
-           *check_cmd = nullptr, *bench_cmd = nullptr, *reference_cmd = nullptr;
+           *check_cmd = nullptr, *bench_cmd = nullptr, *reference_cmd = nullptr, *view_cmd = nullptr;
 };
 
 void declare_commands(Commands& c) {
@@ -431,6 +434,14 @@ void declare_commands(Commands& c) {
   add_compile_options(c.bench_cmd, c.bench);
 
   c.reference_cmd = app.add_subcommand("reference", "print the pattern language reference (docs/language.md)");
+
+  c.view_cmd = app.add_subcommand("view",
+                                  "serve the fabric to a browser on 127.0.0.1 and rebuild it whenever the pattern or a module "
+                                  "it requires changes (Ctrl-C stops; docs/view.md)");
+  add_pattern_options(c.view_cmd, c.view);
+  c.view_cmd->add_option("--port", c.view_port, "the port on 127.0.0.1 (default 0: a free one)")->check(CLI::Range(0, 65535));
+  c.view_cmd->add_flag("--no-open", c.view_no_open, "print the address only; do not open a browser");
+  add_compile_options(c.view_cmd, c.view);
 }
 
 // Outputs that would clobber the pattern or each other, or binary to a terminal: the
@@ -472,19 +483,20 @@ int refuse_bad_outputs(const Commands& c) {
 void settle_defaults(Commands& c) {
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
                            std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.chart_cmd, &c.chart},
-                           std::pair{c.check_cmd, &c.check}}) {
+                           std::pair{c.check_cmd, &c.check}, std::pair{c.view_cmd, &c.view}}) {
     if (!cmd->parsed() || cmd->get_option("--max-seconds")->count() != 0) continue;
     const knitc::runtime::Limits defaults;
     args->run.limits.seconds = defaults.seconds * std::max(1.0, static_cast<double>(args->run.limits.instructions) /
                                                                     static_cast<double>(defaults.instructions));
   }
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
-                           std::pair{c.snapshot_cmd, &c.snapshot}}) {
+                           std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.view_cmd, &c.view}}) {
     if (cmd->parsed() && cmd->get_option("--relax")->count() == 0)
       args->compile.relax = knitc::relaxed_by_default(args->compile.loop_model);
   }
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
-                           std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.bench_cmd, &c.bench}}) {
+                           std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.bench_cmd, &c.bench},
+                           std::pair{c.view_cmd, &c.view}}) {
     if (!cmd->parsed()) continue;
     args->compile.instancing = args->flatten    ? knitc::Instancing::flatten
                                : args->instance ? knitc::Instancing::instance
@@ -532,6 +544,17 @@ int dispatch(Commands& c) {
   if (c.chart_cmd->parsed()) return chart(c.chart);
   if (c.check_cmd->parsed()) return check(c.check);
   if (c.reference_cmd->parsed()) return write({knitc::writers::text_file("-", knitc::runtime::language_reference())});
+  if (c.view_cmd->parsed()) {
+    knitc::cli::ViewOptions v;
+    v.pattern = c.view.pattern;
+    v.run = c.view.run;
+    v.printed = c.view.printed.options;
+    v.compile = c.view.compile;
+    v.port = c.view_port;
+    v.open = !c.view_no_open;
+    v.quiet = c.view.quiet;
+    return knitc::cli::view(v);
+  }
   return exit_usage;
 }
 
@@ -558,7 +581,7 @@ int run(int argc, char** argv) {
   if (const int code = refuse_bad_outputs(c); code != 0) return code;
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
                            std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.chart_cmd, &c.chart},
-                           std::pair{c.check_cmd, &c.check}}) {
+                           std::pair{c.check_cmd, &c.check}, std::pair{c.view_cmd, &c.view}}) {
     if (!cmd->parsed()) continue;
     if (const auto problem = knitc::cli::settle_printed_options(cmd, args->pattern, args->printed)) {
       report(*problem);

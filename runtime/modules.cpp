@@ -93,6 +93,7 @@ int require_verb(lua_State* L) {
     tried += "\n\t" + candidate.string();
   }
   if (path.empty()) fail(L, "module \"" + name + "\" not found; looked for:" + tried);
+  s.modules.push_back(path);
   std::string source;
   try {
     source = read_source(path, max_module_bytes);

@@ -103,11 +103,18 @@ RunResult run_script(std::string_view source, const std::string& file, const Run
 
 RunResult run_pattern(std::string_view source, const std::string& file, const RunOptions& options) {
   Script script;
+  auto files = [&] {
+    std::vector<std::string> read{file};
+    read.insert(read.end(), script.modules.begin(), script.modules.end());
+    return read;
+  };
   try {
-    return run_script(source, file, options, script);
+    RunResult result = run_script(source, file, options, script);
+    result.files = files();
+    return result;
   } catch (const PatternError& e) {
     // The warnings given before the error are still news to the designer.
-    throw PatternError(printable(e.what()), warnings_of(script));
+    throw PatternError(printable(e.what()), warnings_of(script), files());
   }
 }
 

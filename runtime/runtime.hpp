@@ -39,9 +39,11 @@ struct RunOptions {
 // printable (no control bytes, no overlong words) and bounded in length.
 class PatternError : public std::runtime_error {
  public:
-  explicit PatternError(const std::string& message, std::vector<std::string> warnings_before = {})
-      : std::runtime_error(message), warnings(std::move(warnings_before)) {}
+  explicit PatternError(const std::string& message, std::vector<std::string> warnings_before = {},
+                        std::vector<std::string> files_read = {})
+      : std::runtime_error(message), warnings(std::move(warnings_before)), files(std::move(files_read)) {}
   std::vector<std::string> warnings;  // the warnings given before the error, to print first
+  std::vector<std::string> files;     // the pattern and the modules it required before the error
 };
 
 // A pattern file that cannot be read: missing, not a regular file, unreadable.
@@ -53,6 +55,7 @@ class FileError : public std::runtime_error {
 struct RunResult {
   Pattern pattern;
   std::vector<std::string> warnings;  // "file:line: ..." each
+  std::vector<std::string> files;     // the pattern's file and every module it required: what a watcher watches
 };
 
 // Runs `source` as the script `file` (the name messages use) and builds its Pattern.

@@ -28,6 +28,7 @@ struct Script {
   std::vector<std::string> warnings;
   std::size_t warnings_dropped = 0;   // warnings past max_warnings, counted only
   const char* running_verb = nullptr;  // the verb running now: verbs do not nest
+  std::vector<std::string> modules;    // the module files require found, in order
 };
 
 inline constexpr std::size_t max_warnings = 200;  // kept; the rest are counted

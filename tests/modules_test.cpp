@@ -534,6 +534,27 @@ TEST(ModulesRequire, RowsWorkedByALibraryFunctionAreLocatedAtThePatternsLine) {
   fs::remove_all(dir);
 }
 
+TEST(ModulesRequire, TheFilesReadAreTheWatchersList) {
+  // knitc view watches these: the pattern and every module it required, also when a
+  // module failed (mending the module must rebuild).
+  const fs::path dir = folder_with("modules-files", {{"knit.lua", "return { go = function()\n  row \"k\"\nend }\n"},
+                                                      {"broken.lua", "error(\"broken on purpose\")\n"}});
+  runtime::RunOptions options;
+  options.module_dirs = {dir.string()};
+  const auto result = runtime::run_pattern(std::string(header) + "local m = require \"knit\"\ncast_on(4)\nm.go()\n", "t.lua", options);
+  ASSERT_EQ(result.files.size(), 2u);
+  EXPECT_EQ(result.files[0], "t.lua");
+  EXPECT_EQ(fs::path(result.files[1]).filename(), "knit.lua");
+  try {
+    runtime::run_pattern(std::string(header) + "require \"knit\"\nrequire \"broken\"\n", "t.lua", options);
+    FAIL() << "a broken module must fail the pattern";
+  } catch (const runtime::PatternError& e) {
+    ASSERT_EQ(e.files.size(), 3u);
+    EXPECT_EQ(fs::path(e.files[2]).filename(), "broken.lua");
+  }
+  fs::remove_all(dir);
+}
+
 // ---- the example patterns ----
 
 TEST(ModulesExamples, ThePatternsUsingTheLibraryRun) {

@@ -33,6 +33,7 @@ set(where_language  "runtime/language")
 set(where_runtime   "runtime")
 set(where_render    "render")
 set(where_bench     "bench")
+set(where_view      "view")
 set(where_cli       "cli")
 
 # layer: the layers it uses directly
@@ -56,10 +57,11 @@ set(uses_language "pattern")
 set(uses_runtime "language")
 set(uses_render "mesh")
 set(uses_bench "writers")
-set(uses_cli "runtime;writers;render;bench")
+set(uses_view "language;compile")
+set(uses_cli "runtime;writers;render;bench;view")
 
 set(layers base pattern mesh spatial nurbs knit_graph layout yarn_paths relax sweep curves tubes tiles measure compile writers
-    language runtime render bench cli)
+    language runtime render bench view cli)
 
 # The layer of a file (a path from the root), most specific place first; "" if none.
 function(layer_of path out)
@@ -95,9 +97,9 @@ endforeach()
 
 file(GLOB_RECURSE sources RELATIVE "${ROOT}" "${ROOT}/compiler/*.cpp" "${ROOT}/compiler/*.hpp" "${ROOT}/runtime/*.cpp"
      "${ROOT}/runtime/*.hpp" "${ROOT}/render/*.cpp" "${ROOT}/render/*.hpp" "${ROOT}/cli/*.cpp" "${ROOT}/cli/*.hpp"
-     "${ROOT}/bench/*.cpp" "${ROOT}/bench/*.hpp")
+     "${ROOT}/bench/*.cpp" "${ROOT}/bench/*.hpp" "${ROOT}/view/*.cpp" "${ROOT}/view/*.hpp")
 # Where an include is looked for: the including file's folder, then the targets' roots.
-set(search_roots compiler runtime render cli)
+set(search_roots compiler runtime render cli .)
 
 set(problems 0)
 set(checked 0)

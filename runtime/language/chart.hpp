@@ -51,4 +51,8 @@ std::variant<std::vector<ChartRow>, ChartError> parse_chart(std::string_view tex
 // rows); yarn ids after each row when the pattern changes yarn.
 std::string chart_text(const Pattern& pattern);
 
+// A stitch's cell as chart_text draws it: its chart symbol, a cable's name drawn across
+// its width ("C4F----" spans 4 cells of "x " each, less the last space).
+std::string chart_cell(StitchId id);
+
 }  // namespace knitc::language

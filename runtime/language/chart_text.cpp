@@ -5,19 +5,13 @@
 
 namespace knitc::language {
 
-namespace {
-
-// A stitch's cell text: its chart symbol, a cable's name drawn across its width
-// ("C4F----" spans 4 cells of "x " each, less the last space).
-std::string cell(StitchId id) {
+std::string chart_cell(StitchId id) {
   const StitchDef& s = stitch(id);
   std::string text(words(id).symbol);
   const int width = std::max(s.consumes, s.produces);
   if (s.family == StitchFamily::cable && width > 1) text.resize(std::max<std::size_t>(text.size(), 2 * width - 1), '-');
   return text;
 }
-
-}  // namespace
 
 std::string chart_text(const Pattern& pattern) {
   const std::size_t rows = pattern.courses.size();
@@ -30,7 +24,7 @@ std::string chart_text(const Pattern& pattern) {
   std::size_t widest = 0;
   for (std::size_t r = 0; r < rows; ++r) {
     std::string cells;
-    for (const Op& op : pattern.courses[r].ops) cells += (cells.empty() ? "" : " ") + cell(op.stitch);
+    for (const Op& op : pattern.courses[r].ops) cells += (cells.empty() ? "" : " ") + chart_cell(op.stitch);
     widest = std::max(widest, cells.size());
     lines.push_back(std::move(cells));
   }

@@ -217,6 +217,12 @@ const StitchWords& words(StitchId id) {
   return all_words()[id];
 }
 
+std::string_view long_name(StitchId id) {
+  const std::string_view summary = words(id).summary;
+  const auto colon = summary.find(':');
+  return colon == std::string_view::npos || colon == 0 ? stitch(id).name : summary.substr(0, colon);
+}
+
 std::optional<StitchId> find_stitch(std::string_view word) {
   // Several hundred spellings, looked up for every word of every row: a map, the first
   // stitch in table order keeping a spelling two share.

@@ -23,6 +23,10 @@ struct StitchWords {
 // The words of stitch `id` (every stitch of the table has them).
 const StitchWords& words(StitchId id);
 
+// The stitch said in full, as its summary opens ("knit two together" for k2tog): the
+// summary up to its first colon, else the stitch's name.
+std::string_view long_name(StitchId id);
+
 // The stitch a name or alias spells, case-insensitive.
 std::optional<StitchId> find_stitch(std::string_view name_or_alias);
 
