@@ -125,6 +125,14 @@ TEST(Cli, WritesTheCentrelineJson) {
   for (const auto& loop : doc["loops"]) {
     EXPECT_EQ(loop["stitch"], "k");
     EXPECT_EQ(loop["yarn"], "A");
+    // The row's script line: jersey's right-side rows are line 11, its wrong-side rows 12.
+    const int course = loop["course"].get<int>();
+    if (course >= 1 && course <= 24) {
+      EXPECT_EQ(loop["file"], "patterns/jersey.lua");
+      EXPECT_EQ(loop["line"], course % 2 == 1 ? 11 : 12) << course;
+    } else {
+      EXPECT_EQ(loop["line"], 0) << course;
+    }
   }
   EXPECT_LT(worst_sample_off_curve(doc, 29), 1e-5);
   fs::remove_all(dir);

@@ -60,10 +60,15 @@ std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_p
         data.push_back(xyz(piece.path.data_points[k]));
       for (std::size_t s = piece.loop_samples[j].first; s <= piece.loop_samples[j].second; ++s)
         samples.push_back(xyz(piece.frames.origin[s]));
+      // The script line of the row that made it (the cast-on's and a bind-off's have none).
+      const bool worked = loop.course >= 1 && static_cast<std::size_t>(loop.course) <= pattern.courses.size();
+      const SourceLocation where = worked ? pattern.courses[static_cast<std::size_t>(loop.course) - 1].where : SourceLocation{};
       loops[index] = {{"course", loop.course},
                       {"wale", loop.wale},
                       {"stitch", std::string(stitch(loop.stitch).name)},
                       {"yarn", pattern.yarns[loop.yarn].id},
+                      {"file", where.file},
+                      {"line", where.line},
                       {"data_points", std::move(data)},
                       {"samples", std::move(samples)},
                       // The same samples as a range of its yarn's points: [first, last].

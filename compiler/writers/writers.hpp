@@ -34,13 +34,15 @@ std::string glb(const mesh::Mesh& mesh, const std::string& generator, const GlbO
 
 // The centreline JSON (units mm), rounded to 1e-6 mm:
 // {"units":"mm","loop_model":..., "yarns":[{"id","color","free_diameter","core_diameter",
-//  "points","pieces"}], "loops":[{"course","wale","stitch","yarn","data_points","samples",
+//  "points","pieces"}], "loops":[{"course","wale","stitch","yarn","file","line","data_points","samples",
 //  "points"}]}
 // A yarn's "points" are the samples of all its pieces, piece after piece; "pieces" gives
 // each piece as [first point index, point count]. A loop's "data_points" are the points
 // its stretch of curve passes through and its "samples" that stretch, both in the mesh's
 // space (in the round, wrapped onto the tube) and in the yarn's working order; its
-// "points" are that stretch as [first, last] indices into its yarn's points.
+// "points" are that stretch as [first, last] indices into its yarn's points; its "file"
+// and "line" the script line of the row that made it ("" and 0 for the cast-on's and a
+// bind-off's loops).
 std::string centreline_json(const Pattern& pattern, const Fabric& fabric, yarn_paths::LoopModel model);
 
 // A short, stable, diff-friendly summary of a compiled fabric for snapshot tests: counts,
