@@ -38,6 +38,7 @@ struct Yarn {
   std::string id;         // the name the script gives it, e.g. "A"
   double diameter = 1.0;  // mm: the free diameter, at which the tube is drawn
   std::string color;      // CSS hex, "#rrggbb"
+  double grams_per_metre = 1.0 / 2.3;  // its weight per length: grams used (a DK's 230 m per 100 g)
   Section section = Section::circle;
   double aspect = 1.0;    // ellipse: minor / major, in (0, 1]
   int plies = 1;          // plied: 2 to 6

@@ -131,6 +131,13 @@ void read_size(lua_State* L, int t, const std::string& name, Yarn& y) {
   }
   y.diameter = size.free_diameter;
   y.core_diameter = size.core_diameter;
+  // Its weight per length: the label's, else the weight's typical, else tex's, else the
+  // core's fibre at its packing.
+  const auto metres = number_field(L, t, name, "metres_per_100g");
+  if (metres) y.grams_per_metre = 100.0 / in_range(L, *metres, name + ".metres_per_100g", field("yarn", "metres_per_100g"));
+  else if (weight) y.grams_per_metre = 100.0 / yarn::find_weight(language::lower(*weight))->metres_per_100g;
+  else if (tex) y.grams_per_metre = *tex / 1000.0;
+  else y.grams_per_metre = yarn::grams_per_metre(y.core_diameter, fibre->density);
 }
 
 void read_yarns(lua_State* L, int index, Pattern& p) {
@@ -207,14 +214,15 @@ void read_gauge(lua_State* L, int index, Pattern& p) {
 }  // namespace
 
 std::string yarn_weight_markdown() {
-  std::string out = "| weight | also | wraps per inch | free diameter (mm) | core diameter (mm) |\n|---|---|---|---|---|\n";
+  std::string out =
+      "| weight | also | wraps per inch | free diameter (mm) | core diameter (mm) | m per 100 g |\n|---|---|---|---|---|---|\n";
   for (const yarn::Weight& w : yarn::weights()) {
     std::string a(w.aliases);
     std::replace(a.begin(), a.end(), '|', ',');
     const yarn::Size size = yarn::from_wpi(w.wpi);
     char d[64];
     std::snprintf(d, sizeof d, "%.2f | %.2f", size.free_diameter, size.core_diameter);
-    out += "| " + std::string(w.name) + " | " + a + " | " + show(w.wpi) + " | " + d + " |\n";
+    out += "| " + std::string(w.name) + " | " + a + " | " + show(w.wpi) + " | " + d + " | " + show(w.metres_per_100g) + " |\n";
   }
   return out;
 }

@@ -61,6 +61,8 @@ constexpr Field fields[] = {
     text("yarn", "fibre", "wool", "the fibre (the table below), whose density a tex yarn's core follows"),
     number("yarn", "core_diameter", 0, 15, " mm", "the compact core's diameter, less than the free diameter",
            std::nullopt, "the free diameter / 1.91"),
+    number("yarn", "metres_per_100g", 1, 100000, " m per 100 g", "the yarn's length per 100 g, as its label gives it: the grams used",
+           std::nullopt, "the weight's (the table below); tex's; else from the core and the fibre"),
     text("yarn", "color", "#d9c8a9", "a CSS hex colour, \"#rrggbb\" or \"#rgb\""),
     choice("yarn", "section", "circle|ellipse|plied", "circle",
            "circle; ellipse: a yarn pressed flat; plied: plies twisted about the centreline"),

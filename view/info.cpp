@@ -106,7 +106,8 @@ std::string fabric_info(const Pattern& pattern, const Fabric& fabric) {
     const Yarn& yarn = pattern.yarns[y];
     yarns.push_back({{"id", yarn.id},
                      {"color", yarn.color},
-                     {"metres", tenth_um(length[y] / 1000.0)}});
+                     {"metres", tenth_um(length[y] / 1000.0)},
+                     {"grams", tenth_um(length[y] / 1000.0 * yarn.grams_per_metre)}});
   }
   doc["figures"] = {{"width_cm", tenth_um(width / 10.0)},
                     {"height_cm", tenth_um(height / 10.0)},

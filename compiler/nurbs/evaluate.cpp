@@ -128,8 +128,8 @@ std::array<Point, max_order + 1> derivatives(const Curve& c, double u, int order
 std::array<Point, max_order + 1> derivatives(const Curve& c, int span, double u, int order) {
   assert(order >= 0 && order <= max_order);
   // (u may round onto the span's end: there both spans' polynomials agree.)
-  assert(span >= c.degree && static_cast<std::size_t>(span) + 1 < c.knots.size() && c.knots[static_cast<std::size_t>(span)] <= u &&
-         u <= c.knots[static_cast<std::size_t>(span) + 1]);
+  assert(span == find_span(c, u) || (span >= c.degree && static_cast<std::size_t>(span) + 1 < c.knots.size() &&
+                                     c.knots[static_cast<std::size_t>(span)] <= u && u <= c.knots[static_cast<std::size_t>(span) + 1]));
   const int p = c.degree;
   if (p == 3 && c.weights.empty()) return cubic_derivatives(c, span, u, order);
   BasisTable N;

@@ -9,15 +9,17 @@ namespace knitc::yarn {
 
 namespace {
 
+// Lengths per 100 g: the middle of what labels of each weight give (Craft Yarn Council's
+// yardage ranges, in metres).
 constexpr std::array<Weight, 8> weight_table{{
-    {"lace", "", 35.0},
-    {"super fine", "fingering|sock", 22.0},
-    {"fine", "sport", 15.0},
-    {"light", "dk", 13.0},
-    {"medium", "worsted|aran", 10.5},
-    {"bulky", "chunky", 7.5},
-    {"super bulky", "", 5.5},
-    {"jumbo", "", 4.0},
+    {"lace", "", 35.0, 800.0},
+    {"super fine", "fingering|sock", 22.0, 400.0},
+    {"fine", "sport", 15.0, 300.0},
+    {"light", "dk", 13.0, 230.0},
+    {"medium", "worsted|aran", 10.5, 180.0},
+    {"bulky", "chunky", 7.5, 120.0},
+    {"super bulky", "", 5.5, 80.0},
+    {"jumbo", "", 4.0, 40.0},
 }};
 
 // Densities of the dry fibres (Morton and Hearle, Physical Properties of Textile Fibres).
@@ -75,6 +77,12 @@ Size from_tex(double tex, double density) {
   const double fibre_area = tex / (1000.0 * density);
   const double core = std::sqrt(4.0 * fibre_area / (std::numbers::pi * core_packing));
   return from_core_diameter(core);
+}
+
+double grams_per_metre(double core_diameter, double density) {
+  assert(core_diameter > 0.0 && density > 0.0);
+  // The fibre's section in mm² times a metre is that many cm³.
+  return density * core_packing * std::numbers::pi * 0.25 * core_diameter * core_diameter;
 }
 
 Size from_free_diameter(double free_diameter) {

@@ -31,11 +31,13 @@ inline constexpr double free_per_core = wraps_flattening * wraps_per_core;
 // tex at 8 WPI) within 8% of the WPI rule's (tests/yarn_size_test.cpp).
 inline constexpr double core_packing = 0.45;
 
-// A standard yarn weight (Craft Yarn Council) at the middle of its wraps-per-inch range.
+// A standard yarn weight (Craft Yarn Council) at the middle of its wraps-per-inch range,
+// and the length per 100 g typical of its labels.
 struct Weight {
   std::string_view name;
   std::string_view aliases;  // '|'-separated
   double wpi = 0.0;
+  double metres_per_100g = 0.0;
 };
 std::span<const Weight> weights();
 // The weight a name or alias spells; `name` already in lower case.
@@ -59,5 +61,8 @@ Size from_tex(double tex, double density);
 Size from_free_diameter(double free_diameter);
 // core_diameter > 0 (mm): the free diameter at free_per_core times it.
 Size from_core_diameter(double core_diameter);
+// Grams per metre of a yarn whose core (mm, > 0) holds a fibre of `density` (g/cm³, > 0)
+// at core_packing: from_tex's rule read the other way (g/m = tex / 1000).
+double grams_per_metre(double core_diameter, double density);
 
 }  // namespace knitc::yarn

@@ -111,7 +111,7 @@ async function loadFabric(version) {
 function showFigures(info) {
   const f = info.figures;
   document.getElementById('title').textContent = info.pattern;
-  const yarns = f.yarns.map((y) => `<span style="color:${y.color}">■</span> ${y.id}: ${y.metres.toFixed(1)} m`).join(', ');
+  const yarns = f.yarns.map((y) => `<span style="color:${y.color}">■</span> ${y.id}: ${y.metres.toFixed(1)} m, ${y.grams.toFixed(1)} g`).join(', ');
   figuresBox.innerHTML = `${f.width_cm.toFixed(1)} × ${f.height_cm.toFixed(1)} cm · ` +
     `${f.stitches_per_10cm.toFixed(1)} sts and ${f.rows_per_10cm.toFixed(1)} rows per 10 cm · ${f.loops} loops<br>${yarns}`;
   figuresBox.classList.remove('muted');
