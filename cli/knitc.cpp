@@ -29,6 +29,7 @@
 #include "printed.hpp"
 #include "stats.hpp"
 #include "view.hpp"
+#include "gallery.hpp"
 #include "compile.hpp"
 #include "measure/measure.hpp"
 #include "render.hpp"
@@ -376,13 +377,14 @@ namespace {
 // Every subcommand and the arguments it fills.
 struct Commands {
   CLI::App app{"knitc: compiles knitting pattern scripts into yarn-level 3D fabric", "knitc"};
-  Args build, render, snapshot, chart, check, bench, view;
+  Args build, render, snapshot, chart, check, bench, view, gallery;
   int view_port = 0;
   bool view_no_open = false;
   std::string bench_size = "150x250";
   bool bench_header = false, bench_flat = false;
   CLI::App *build_cmd = nullptr, *render_cmd = nullptr, *snapshot_cmd = nullptr, *chart_cmd = nullptr,
-           *check_cmd = nullptr, *bench_cmd = nullptr, *reference_cmd = nullptr, *view_cmd = nullptr;
+           *check_cmd = nullptr, *bench_cmd = nullptr, *reference_cmd = nullptr, *view_cmd = nullptr,
+           *gallery_cmd = nullptr;
 };
 
 void declare_commands(Commands& c) {
@@ -442,6 +444,14 @@ void declare_commands(Commands& c) {
   c.view_cmd->add_option("--port", c.view_port, "the port on 127.0.0.1 (default 0: a free one)")->check(CLI::Range(0, 65535));
   c.view_cmd->add_flag("--no-open", c.view_no_open, "print the address only; do not open a browser");
   add_compile_options(c.view_cmd, c.view);
+
+  c.gallery_cmd = app.add_subcommand("gallery", "write a pattern library as a static site: an index, and a page per pattern "
+                                                "with its 3D view, chart, figures and source (docs/view.md)");
+  c.gallery_cmd->add_option("folder", c.gallery.pattern, "the library: every *.lua directly in it")->required();
+  c.gallery_cmd->add_option("-o,--output", c.gallery.output, "the folder to write the site to")->required();
+  c.gallery_cmd->add_option("-I,--include", c.gallery.run.module_dirs, "a folder `require` searches first (repeatable)");
+  c.gallery_cmd->add_flag("-q,--quiet", c.gallery.quiet, "print nothing on success");
+  add_compile_options(c.gallery_cmd, c.gallery);
 }
 
 // Outputs that would clobber the pattern or each other, or binary to a terminal: the
@@ -490,13 +500,14 @@ void settle_defaults(Commands& c) {
                                                                     static_cast<double>(defaults.instructions));
   }
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
-                           std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.view_cmd, &c.view}}) {
+                           std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.view_cmd, &c.view},
+                           std::pair{c.gallery_cmd, &c.gallery}}) {
     if (cmd->parsed() && cmd->get_option("--relax")->count() == 0)
       args->compile.relax = knitc::relaxed_by_default(args->compile.loop_model);
   }
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
                            std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.bench_cmd, &c.bench},
-                           std::pair{c.view_cmd, &c.view}}) {
+                           std::pair{c.view_cmd, &c.view}, std::pair{c.gallery_cmd, &c.gallery}}) {
     if (!cmd->parsed()) continue;
     args->compile.instancing = args->flatten    ? knitc::Instancing::flatten
                                : args->instance ? knitc::Instancing::instance
@@ -554,6 +565,15 @@ int dispatch(Commands& c) {
     v.open = !c.view_no_open;
     v.quiet = c.view.quiet;
     return knitc::cli::view(v);
+  }
+  if (c.gallery_cmd->parsed()) {
+    knitc::cli::GalleryOptions g;
+    g.dir = c.gallery.pattern;
+    g.site = c.gallery.output;
+    g.run = c.gallery.run;
+    g.compile = c.gallery.compile;
+    g.quiet = c.gallery.quiet;
+    return knitc::cli::gallery(g);
   }
   return exit_usage;
 }

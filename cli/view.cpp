@@ -133,7 +133,7 @@ int view(const ViewOptions& o) {
   };
   watched = look();
   for (;;) {
-    const timespec wait{0, 100'000'000};  // a tenth of a second between looks
+    const timespec wait{0, 50'000'000};  // a twentieth of a second between looks
     siginfo_t info;
     if (sigtimedwait(&stops, &info, &wait) > 0) break;
     if (look() == watched) continue;

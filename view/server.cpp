@@ -1,10 +1,11 @@
 #include "view/server.hpp"
 
-#include <fstream>
-#include <iterator>
-#include <map>
+#include "view/assets.hpp"
+
 #include <mutex>
 #include <stdexcept>
+#include <string_view>
+#include <string_view>
 #include <thread>
 #include <chrono>
 
@@ -13,34 +14,6 @@
 
 namespace knitc::view {
 
-namespace {
-
-// Every file the server may send besides the fabric: its address -> where it is read from.
-// Nothing else of the file system is reachable (a path is looked up, never joined).
-const std::map<std::string, std::pair<std::string, const char*>>& assets() {
-  static const std::map<std::string, std::pair<std::string, const char*>> files = {
-      {"/", {KNITC_VIEW_PAGE_DIR "/index.html", "text/html; charset=utf-8"}},
-      {"/view.js", {KNITC_VIEW_PAGE_DIR "/view.js", "text/javascript"}},
-      {"/three/three.module.js", {KNITC_THREE_DIR "/build/three.module.js", "text/javascript"}},
-      {"/three/three.core.js", {KNITC_THREE_DIR "/build/three.core.js", "text/javascript"}},
-      {"/three/addons/loaders/GLTFLoader.js", {KNITC_THREE_DIR "/examples/jsm/loaders/GLTFLoader.js", "text/javascript"}},
-      {"/three/addons/utils/BufferGeometryUtils.js", {KNITC_THREE_DIR "/examples/jsm/utils/BufferGeometryUtils.js", "text/javascript"}},
-      {"/three/addons/utils/SkeletonUtils.js", {KNITC_THREE_DIR "/examples/jsm/utils/SkeletonUtils.js", "text/javascript"}},
-      {"/three/addons/controls/OrbitControls.js", {KNITC_THREE_DIR "/examples/jsm/controls/OrbitControls.js", "text/javascript"}},
-      {"/three/addons/libs/meshopt_decoder.module.js",
-       {KNITC_THREE_DIR "/examples/jsm/libs/meshopt_decoder.module.js", "text/javascript"}},
-  };
-  return files;
-}
-
-bool read_file(const std::string& path, std::string& out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return !in.bad();
-}
-
-}  // namespace
 
 bool own_host(const std::string& host, int port) {
   const std::string p = ":" + std::to_string(port);
@@ -74,12 +47,13 @@ Server::Server(int port) : state_(std::make_unique<State>()) {
     }
     return httplib::Server::HandlerResponse::Unhandled;
   });
-  for (const auto& [address, file] : assets()) {
-    const std::string path = file.first;
-    const char* type = file.second;
-    s.http.Get(address, [path, type](const httplib::Request&, httplib::Response& res) {
+  for (const Asset& asset : assets()) {
+    if (std::string_view(asset.address) == "/pattern.html") continue;  // served filled in, at /
+    const std::string path = asset.path;
+    const char* type = asset.type;
+    s.http.Get(asset.address, [path, type](const httplib::Request&, httplib::Response& res) {
       std::string body;
-      if (!read_file(path, body)) {
+      if (!read_asset(path, body)) {
         res.status = 404;
         res.set_content("missing " + path + "; run ./scripts/install-deps\n", "text/plain");
         return;
@@ -88,6 +62,23 @@ Server::Server(int port) : state_(std::make_unique<State>()) {
       res.set_content(std::move(body), type);
     });
   }
+  // The page: the template with the live view's parts (modules by an import map, polling).
+  s.http.Get("/", [](const httplib::Request&, httplib::Response& res) {
+    std::string page;
+    if (!read_asset(KNITC_VIEW_PAGE_DIR "/pattern.html", page)) {
+      res.status = 404;
+      return;
+    }
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(filled(std::move(page),
+                           {{"title", "knitc view"},
+                            {"head", "<script type=\"importmap\">{\"imports\": {\"three\": \"/three/three.module.js\", "
+                                     "\"three/addons/\": \"/three/addons/\"}}</script>\n<link rel=\"stylesheet\" href=\"/view.css\">"},
+                            {"home", ""},
+                            {"source", ""},
+                            {"scripts", "<script type=\"module\" src=\"/view.js\"></script>"}}),
+                    "text/html; charset=utf-8");
+  });
   s.http.Get("/favicon.ico", [](const httplib::Request&, httplib::Response& res) { res.status = 204; });
   s.http.Get("/state", [&s](const httplib::Request&, httplib::Response& res) {
     std::lock_guard lock(s.mutex);

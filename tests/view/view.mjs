@@ -3,8 +3,8 @@
 // edit's message over the last fabric, a loop pointed at and named, a chart cell lighting
 // its loop, foreign requests refused, and Ctrl-C leaving nothing behind.
 // Usage: node view.mjs KNITC SOURCE_DIR OUT_DIR   (a screenshot goes to OUT_DIR/view.png)
-import { spawn } from 'node:child_process';
-import { mkdtemp, writeFile, readdir, rm, mkdir } from 'node:fs/promises';
+import { spawn, spawnSync } from 'node:child_process';
+import { mkdtemp, writeFile, readFile, readdir, rm, mkdir } from 'node:fs/promises';
 import { request } from 'node:http';
 import { connect } from 'node:net';
 import { tmpdir } from 'node:os';
@@ -220,6 +220,61 @@ try {
   check(rebinding.status === 403, `a rebound name with its port refused (${rebinding.status})`);
 } finally {
   await browser.close();
+}
+
+// The library's site: knitc gallery on a folder of two patterns, two pages opened from disk.
+{
+  const library = await mkdtemp(join(tmpdir(), 'knitc-library-'));
+  await writeFile(join(library, 'swatch.lua'), pattern('row "p"'));
+  await writeFile(join(library, 'jersey.lua'), await readFile(join(source, 'patterns/jersey.lua')));
+  const site = join(out, 'site');
+  await rm(site, { recursive: true, force: true });
+  const made = spawnSync(knitc, ['gallery', library, '-o', site, '-q'], { encoding: 'utf8' });
+  check(made.status === 0, `knitc gallery writes the site (exit ${made.status}${made.stderr ? ': ' + made.stderr.trim() : ''})`);
+  const browser2 = await puppeteer.launch({
+    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+    headless: true,
+    args: ['--no-sandbox', '--disable-gpu', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
+  });
+  try {
+    const tab = await browser2.newPage();
+    await tab.setViewport({ width: 1200, height: 700 });
+    await tab.goto(`file://${join(site, 'index.html')}`);
+    const cards = await tab.evaluate(() => Array.from(document.querySelectorAll('a.card')).map((a) => a.getAttribute('href')));
+    check(JSON.stringify(cards) === JSON.stringify(['jersey.html', 'swatch.html']), `the index links each pattern's page (${cards})`);
+    for (const page of cards) {
+      const problems = [];
+      tab.removeAllListeners('pageerror');
+      tab.on('pageerror', (e) => problems.push(String(e)));
+      await tab.goto(`file://${join(site, page)}`);
+      let loaded = true;
+      await tab.waitForFunction('window.knitcView && window.knitcView.fabricVersion > 0', { timeout: 60000 }).catch(() => { loaded = false; });
+      const fabric = loaded ? await tab.evaluate(() => {
+        const v = window.knitcView;
+        v.drawNow();
+        const a = v.screenOf(v.info.loops.length >> 1, 0.25);
+        const canvas = document.querySelector('#fabric canvas');
+        const g = document.createElement('canvas').getContext('2d');
+        g.canvas.width = canvas.width;
+        g.canvas.height = canvas.height;
+        g.drawImage(canvas, 0, 0);
+        const r = canvas.getBoundingClientRect();
+        const scale = canvas.width / r.width;
+        let yarn = 0, all = 0;
+        for (let y = a.y - 30; y < a.y + 30; y += 3)
+          for (let x = a.x - 30; x < a.x + 30; x += 3) {
+            const [red, green, blue] = g.getImageData(Math.round((x - r.left) * scale), Math.round((y - r.top) * scale), 1, 1).data;
+            all += 1;
+            if (Math.abs(red - 0xf4) + Math.abs(green - 0xf1) + Math.abs(blue - 0xec) > 40) yarn += 1;
+          }
+        return yarn / all;
+      }) : 0;
+      check(loaded && fabric > 0.3, `${page} opened from disk shows its fabric (${(100 * fabric).toFixed(0)}% of its middle${problems.length ? '; ' + problems.join('; ') : ''})`);
+    }
+  } finally {
+    await browser2.close();
+    await rm(library, { recursive: true, force: true });
+  }
 }
 
 // Ctrl-C: stops at once, exit 0, nothing left beside the pattern.

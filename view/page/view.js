@@ -86,6 +86,10 @@ async function loadFabric(version) {
     loader.loadAsync(`/fabric.glb?v=${version}`),
     fetch(`/fabric.json?v=${version}`).then((r) => r.json()),
   ]);
+  show(gltf, info, version);
+}
+
+function show(gltf, info, version) {
   const first = view.fabric === null;
   if (view.fabric) {
     scene.remove(view.fabric);
@@ -277,4 +281,13 @@ async function poll() {
   setTimeout(poll, 100);
 }
 resize();
-poll();
+if (window.knitcStatic) {
+  // A gallery page: its fabric came with it (base64), nothing to poll.
+  const bytes = Uint8Array.from(atob(window.knitcStatic.glb), (c) => c.charCodeAt(0));
+  loader.parseAsync(bytes.buffer, '').then((gltf) => show(gltf, window.knitcStatic.info, 1), (e) => {
+    errorBox.textContent = `knitc gallery: ${e.message || e}`;
+    errorBox.style.display = 'block';
+  });
+} else {
+  poll();
+}
