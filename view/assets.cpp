@@ -9,16 +9,16 @@ namespace knitc::view {
 std::span<const Asset> assets() {
   static const std::array<Asset, 11> files{{
       {"/view.css", KNITC_VIEW_PAGE_DIR "/view.css", "text/css", false},
-      {"/gallery.js", KNITC_VIEW_PAGE_DIR "/gallery.js", "text/javascript", false},
-      {"/three/three.core.js", KNITC_THREE_DIR "/build/three.core.js", "text/javascript", true},
-      {"/three/three.module.js", KNITC_THREE_DIR "/build/three.module.js", "text/javascript", true},
-      {"/three/addons/utils/BufferGeometryUtils.js", KNITC_THREE_DIR "/examples/jsm/utils/BufferGeometryUtils.js", "text/javascript", true},
-      {"/three/addons/utils/SkeletonUtils.js", KNITC_THREE_DIR "/examples/jsm/utils/SkeletonUtils.js", "text/javascript", true},
-      {"/three/addons/loaders/GLTFLoader.js", KNITC_THREE_DIR "/examples/jsm/loaders/GLTFLoader.js", "text/javascript", true},
-      {"/three/addons/controls/OrbitControls.js", KNITC_THREE_DIR "/examples/jsm/controls/OrbitControls.js", "text/javascript", true},
-      {"/three/addons/libs/meshopt_decoder.module.js", KNITC_THREE_DIR "/examples/jsm/libs/meshopt_decoder.module.js", "text/javascript",
+      {"/gallery.js", KNITC_VIEW_PAGE_DIR "/gallery.js", "application/javascript; charset=utf-8", false},
+      {"/three/three.core.js", KNITC_THREE_DIR "/build/three.core.js", "application/javascript; charset=utf-8", true},
+      {"/three/three.module.js", KNITC_THREE_DIR "/build/three.module.js", "application/javascript; charset=utf-8", true},
+      {"/three/addons/utils/BufferGeometryUtils.js", KNITC_THREE_DIR "/examples/jsm/utils/BufferGeometryUtils.js", "application/javascript; charset=utf-8", true},
+      {"/three/addons/utils/SkeletonUtils.js", KNITC_THREE_DIR "/examples/jsm/utils/SkeletonUtils.js", "application/javascript; charset=utf-8", true},
+      {"/three/addons/loaders/GLTFLoader.js", KNITC_THREE_DIR "/examples/jsm/loaders/GLTFLoader.js", "application/javascript; charset=utf-8", true},
+      {"/three/addons/controls/OrbitControls.js", KNITC_THREE_DIR "/examples/jsm/controls/OrbitControls.js", "application/javascript; charset=utf-8", true},
+      {"/three/addons/libs/meshopt_decoder.module.js", KNITC_THREE_DIR "/examples/jsm/libs/meshopt_decoder.module.js", "application/javascript; charset=utf-8",
        true},
-      {"/view.js", KNITC_VIEW_PAGE_DIR "/view.js", "text/javascript", true},  // last: it imports the others
+      {"/view.js", KNITC_VIEW_PAGE_DIR "/view.js", "application/javascript; charset=utf-8", true},  // last: it imports the others
       {"/pattern.html", KNITC_VIEW_PAGE_DIR "/pattern.html", "text/html; charset=utf-8", false},
   }};
   return files;

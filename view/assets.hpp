@@ -14,7 +14,9 @@ namespace knitc::view {
 struct Asset {
   const char* address;  // as the page asks for it, e.g. "/three/three.module.js"
   std::string path;     // where it is read from
-  const char* type;     // its media type
+  // Its media type. Not one cpp-httplib compresses (it picks brotli at its slowest
+  // setting: a megabyte of three.js took seconds a request, a garment's JSON 35 s).
+  const char* type;
   bool module;          // an ES module (the gallery loads these from blob URLs)
 };
 

@@ -87,7 +87,7 @@ Server::Server(int port) : state_(std::make_unique<State>()) {
                                   {"error", s.shown.error},
                                   {"warnings", s.shown.warnings}};
     res.set_header("Cache-Control", "no-store");
-    res.set_content(state.dump(), "application/json");
+    res.set_content(state.dump(), "application/json; charset=utf-8");
   });
   s.http.Get("/fabric.glb", [&s](const httplib::Request&, httplib::Response& res) {
     std::lock_guard lock(s.mutex);
@@ -97,7 +97,7 @@ Server::Server(int port) : state_(std::make_unique<State>()) {
   s.http.Get("/fabric.json", [&s](const httplib::Request&, httplib::Response& res) {
     std::lock_guard lock(s.mutex);
     res.set_header("Cache-Control", "no-store");
-    res.set_content(s.shown.info, "application/json");
+    res.set_content(s.shown.info, "application/json; charset=utf-8");  // not compressed: see assets.hpp
   });
   s.port = port == 0 ? s.http.bind_to_any_port("127.0.0.1") : (s.http.bind_to_port("127.0.0.1", port) ? port : -1);
   if (s.port <= 0)

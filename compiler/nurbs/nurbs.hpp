@@ -42,9 +42,9 @@ void basis_derivatives(const Curve& curve, int span, double u, int order, BasisT
 // C(u) and its derivatives d^k C / du^k for k = 0..order (order <= 3), rational
 // derivatives by A4.2. Derivatives above the degree are zero.
 std::array<Point, max_order + 1> derivatives(const Curve& curve, double u, int order);
-// The same, in a span already found: u in [knots[span], knots[span + 1]], as
-// find_span(curve, u) gives it (a caller that evaluates many points inside one knot span
-// finds it once).
+// The same, in a span already found: u in [knots[span], knots[span + 1]] (a few ulps
+// past an end allowed, as rounding puts a point there), or find_span(curve, u)'s span (a
+// caller that evaluates many points inside one knot span finds it once).
 std::array<Point, max_order + 1> derivatives(const Curve& curve, int span, double u, int order);
 Point evaluate(const Curve& curve, double u);
 

@@ -102,6 +102,10 @@ function show(gltf, info, version) {
   scene.add(view.fabric);
   view.fabric.updateMatrixWorld(true);
   view.box = new THREE.Box3().setFromObject(view.fabric);
+  triangles = 0;
+  view.fabric.traverse((o) => {
+    if (o.isMesh && o.geometry.index) triangles += (o.geometry.index.count / 3) * (o.isInstancedMesh ? o.count : 1);
+  });
   view.info = info;
   showFigures(info);
   drawChart(info);
@@ -250,7 +254,17 @@ view.screenOf = (loopIndex, along = 0.5) => {
   const r = renderer.domElement.getBoundingClientRect();
   return { x: r.left + (p.x + 1) / 2 * r.width, y: r.top + (1 - p.y) / 2 * r.height };
 };
-renderer.domElement.addEventListener('pointermove', (e) => { if (e.buttons === 0) view.pointAt(e.clientX, e.clientY); });
+// A swatch answers the pointer as it moves; a garment (millions of triangles to cast a ray
+// through) when it is clicked, so orbiting stays smooth.
+let triangles = 0, pressedAt = null;
+renderer.domElement.addEventListener('pointermove', (e) => {
+  if (e.buttons === 0 && triangles < 400000) view.pointAt(e.clientX, e.clientY);
+});
+renderer.domElement.addEventListener('pointerdown', (e) => { pressedAt = [e.clientX, e.clientY]; });
+renderer.domElement.addEventListener('pointerup', (e) => {
+  if (pressedAt && Math.hypot(e.clientX - pressedAt[0], e.clientY - pressedAt[1]) < 4) view.pointAt(e.clientX, e.clientY);
+  pressedAt = null;
+});
 
 chart.addEventListener('click', (e) => {
   const r = chart.getBoundingClientRect();
