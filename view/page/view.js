@@ -128,20 +128,24 @@ function showFigures(info) {
 // The chart: row 1 at the bottom, as knitc chart prints it; each stitch a cell as wide as
 // it works, its symbol in it.
 const cellPx = 16;
+const numberPx = 3 * cellPx;  // room for a row's number on either side
 let chartCells = [];  // {x, y, w, row, cell}
+let rowRight = [];    // per row: where its last cell ends
 function drawChart(info) {
   const rows = info.rows;
   const widest = Math.max(1, ...rows.map((r) => r.cells.reduce((n, c) => n + c.width, 0)));
-  chart.width = (widest + 3) * cellPx;
+  chart.width = widest * cellPx + 2 * numberPx;
   chart.height = rows.length * cellPx + 4;
   chartCells = [];
+  rowRight = [];
   rows.forEach((r, i) => {
     const y = (rows.length - 1 - i) * cellPx + 2;
     let x = 0;
     r.cells.forEach((c, k) => {
-      chartCells.push({ x: x * cellPx + 2, y, w: c.width * cellPx, row: i, cell: k });
+      chartCells.push({ x: numberPx + x * cellPx, y, w: c.width * cellPx, row: i, cell: k });
       x += c.width;
     });
+    rowRight.push(numberPx + x * cellPx);
   });
   paintChart();
 }
@@ -162,12 +166,14 @@ function paintChart() {
     g.fillStyle = '#222';
     g.fillText(cell.symbol.replace(/-+$/, ''), c.x + c.w / 2, c.y + cellPx / 2 + 1);
   }
-  g.textAlign = 'left';
+  // Each row's number on the side it is read from, as knitc chart prints it: right-side
+  // rows on the right, wrong-side rows on the left.
   g.fillStyle = '#888';
   rows.forEach((r, i) => {
-    const y = (rows.length - 1 - i) * cellPx + 2;
-    const right = Math.max(...chartCells.filter((c) => c.row === i).map((c) => c.x + c.w), 0);
-    g.fillText(String(r.row), right + 3, y + cellPx / 2 + 1);
+    const y = (rows.length - 1 - i) * cellPx + 2 + cellPx / 2 + 1;
+    const wrong = r.side === 'wrong';
+    g.textAlign = wrong ? 'right' : 'left';
+    g.fillText(String(r.row), wrong ? numberPx - 4 : rowRight[i] + 4, y);
   });
 }
 view.chartCellAt = (row, cell) => chartCells.find((c) => c.row === row - 1 && c.cell === cell);
@@ -196,21 +202,24 @@ function highlight(picked) {
   view.picked = picked;
   if (lit) {
     scene.remove(lit);
-    lit.geometry.dispose();
+    lit.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
     lit = null;
   }
   pickedBox.textContent = picked ? picked.text : 'Point at a loop, or at a chart cell.';
   pickedBox.classList.toggle('muted', !picked);
   if (picked && view.info) {
-    const positions = [];
+    // A thin tube along each loop's centreline, drawn over the yarns that hide it.
+    lit = new THREE.Group();
+    const material = new THREE.MeshBasicMaterial({ color: 0xff2a6d, depthTest: false });
     for (const l of picked.loops) {
       const loop = view.info.loops[l];
-      for (let k = 2; k + 5 < loop.length; k += 3) positions.push(loop[k], loop[k + 1], loop[k + 2], loop[k + 3], loop[k + 4], loop[k + 5]);
+      const points = [];
+      for (let k = 2; k + 2 < loop.length; k += 3) points.push(new THREE.Vector3(loop[k], loop[k + 1], loop[k + 2]));
+      if (points.length < 2) continue;
+      const tube = new THREE.Mesh(new THREE.TubeGeometry(new THREE.CatmullRomCurve3(points), 8 * points.length, 0.18, 6), material);
+      tube.renderOrder = 10;
+      lit.add(tube);
     }
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
-    lit = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: 0xff2a6d, depthTest: false }));
-    lit.renderOrder = 10;
     scene.add(lit);
   }
   if (view.info) paintChart();
