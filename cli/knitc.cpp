@@ -27,6 +27,7 @@
 
 #include "bench.hpp"
 #include "printed.hpp"
+#include "sources.hpp"
 #include "stats.hpp"
 #include "view.hpp"
 #include "gallery.hpp"
@@ -74,9 +75,7 @@ bool compressed(const Args& args, const knitc::Fabric& fabric) {
 // The pattern, or the exit code when it could not be had. Warnings go to stderr.
 std::variant<knitc::Pattern, int> load(const Args& args) {
   try {
-    auto result = knitc::runtime::is_printed_pattern(args.pattern)
-                      ? knitc::runtime::run_printed_file(args.pattern, args.printed.options, args.run)
-                      : knitc::runtime::run_pattern_file(args.pattern, args.run);
+    auto result = knitc::cli::read_pattern(args.pattern, args.printed.options, args.run);
     for (const auto& w : result.warnings) report(w);
     return std::move(result.pattern);
   } catch (const knitc::runtime::PatternError& e) {
@@ -275,7 +274,7 @@ std::optional<std::pair<int, int>> dimensions(const std::string& text, int lo, i
 
 // What every command that runs a pattern takes.
 void add_pattern_options(CLI::App* cmd, Args& a) {
-  cmd->add_option("pattern", a.pattern, "the pattern script (.lua), or a printed pattern (any other file)")->required();
+  cmd->add_option("pattern", a.pattern, "the pattern script (.lua), a knitout machine program (.k, .knitout), or a printed pattern (any other file)")->required();
   cmd->add_option("-I,--include", a.run.module_dirs, "a folder `require` searches first (repeatable)");
   cmd->add_option("--seed", a.run.seed, "math.random's seed, over the pattern's own");
   cmd->add_option_function<std::uint64_t>(

@@ -1,4 +1,5 @@
 #include "printed.hpp"
+#include "sources.hpp"
 
 #include <charconv>
 
@@ -42,7 +43,7 @@ void add_printed_options(CLI::App* cmd, PrintedArgs& a) {
 }
 
 std::optional<std::string> settle_printed_options(const CLI::App* cmd, const std::string& path, PrintedArgs& a) {
-  if (!knitc::runtime::is_printed_pattern(path)) {
+  if (!knitc::runtime::is_printed_pattern(path) || is_knitout(path)) {
     for (const char* name : {"--cast-on", "--gauge", "--weight", "--knitting", "--selvedge"})
       if (cmd->get_option(name)->count() != 0)
         return std::string("knitc: ") + name + " is for a printed pattern (a file that is not .lua); a script declares its own";

@@ -1,4 +1,5 @@
 #include "view.hpp"
+#include "sources.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -57,8 +58,7 @@ Build build(const ViewOptions& o) {
   Build b;
   b.files = {o.pattern};
   try {
-    const runtime::RunResult r = runtime::is_printed_pattern(o.pattern) ? runtime::run_printed_file(o.pattern, o.printed, o.run)
-                                                                        : runtime::run_pattern_file(o.pattern, o.run);
+    const runtime::RunResult r = cli::read_pattern(o.pattern, o.printed, o.run);
     if (!r.files.empty()) b.files = r.files;
     b.published.warnings = lines(r.warnings);
     const Fabric fabric = compile(r.pattern, o.compile);

@@ -21,7 +21,7 @@ void check_floats(const Pattern& p, std::size_t row, const CheckLimits& limits, 
   const int limit = static_cast<int>(std::floor(limits.max_float_mm / W));
   int run = 0, longest = 0;
   for (const Op& op : c.ops) {
-    run = stitch(op.stitch).family == StitchFamily::slip ? run + 1 : 0;
+    run = stitch(op.stitch).family == StitchFamily::slip && !stitch(op.stitch).unreached ? run + 1 : 0;
     longest = std::max(longest, run);
   }
   if (longest > limit) {

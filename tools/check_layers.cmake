@@ -31,6 +31,7 @@ set(where_compile   "compiler/compile.hpp;compiler/compile.cpp")
 set(where_writers   "compiler/writers")
 set(where_language  "runtime/language")
 set(where_runtime   "runtime")
+set(where_knitout   "knitout")
 set(where_render    "render")
 set(where_bench     "bench")
 set(where_view      "view")
@@ -55,13 +56,14 @@ set(uses_compile "relax;tubes;tiles;measure;base")
 set(uses_writers "compile;measure")
 set(uses_language "pattern")
 set(uses_runtime "language")
+set(uses_knitout "pattern")
 set(uses_render "mesh")
 set(uses_bench "writers")
 set(uses_view "language;compile")
-set(uses_cli "runtime;writers;render;bench;view")
+set(uses_cli "runtime;knitout;writers;render;bench;view")
 
 set(layers base pattern mesh spatial nurbs knit_graph layout yarn_paths relax sweep curves tubes tiles measure compile writers
-    language runtime render bench view cli)
+    language runtime knitout render bench view cli)
 
 # The layer of a file (a path from the root), most specific place first; "" if none.
 function(layer_of path out)
@@ -97,9 +99,10 @@ endforeach()
 
 file(GLOB_RECURSE sources RELATIVE "${ROOT}" "${ROOT}/compiler/*.cpp" "${ROOT}/compiler/*.hpp" "${ROOT}/runtime/*.cpp"
      "${ROOT}/runtime/*.hpp" "${ROOT}/render/*.cpp" "${ROOT}/render/*.hpp" "${ROOT}/cli/*.cpp" "${ROOT}/cli/*.hpp"
-     "${ROOT}/bench/*.cpp" "${ROOT}/bench/*.hpp" "${ROOT}/view/*.cpp" "${ROOT}/view/*.hpp")
+     "${ROOT}/bench/*.cpp" "${ROOT}/bench/*.hpp" "${ROOT}/view/*.cpp" "${ROOT}/view/*.hpp" "${ROOT}/knitout/*.cpp"
+     "${ROOT}/knitout/*.hpp")
 # Where an include is looked for: the including file's folder, then the targets' roots.
-set(search_roots compiler runtime render cli .)
+set(search_roots compiler runtime knitout render cli .)
 
 set(problems 0)
 set(checked 0)

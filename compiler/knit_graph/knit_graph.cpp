@@ -189,6 +189,11 @@ Graph build(const Pattern& pattern) {
       }
       switch (s.family) {
         case StitchFamily::slip: {
+          if (s.unreached) {  // held: left as it was, no yarn across it
+            next.push_back(live[at]);
+            next_loose.push_back(loose_over(at, 1));
+            break;
+          }
           // Stitches slipped one after another ("sl3 wyif") leave one float across them all.
           const bool in_front = op.stitch == stitch_id("sl wyif");
           const int first = static_cast<int>(next.size()) + bound;

@@ -81,6 +81,11 @@ constexpr StitchDef wrapping(StitchDef d, int turns) {
   return d;
 }
 
+constexpr StitchDef unreached(StitchDef d) {
+  d.unreached = true;
+  return d;
+}
+
 constexpr StitchDef catching(StitchDef d) {
   d.catches = true;
   return d;
@@ -132,6 +137,9 @@ constexpr auto more = std::to_array<StitchDef>({
     // Bound off within a row ("BO 3 sts, k to end"): knitted, and the stitch before it
     // passed over, so each lies over the next and none stays on the needle.
     plain("bo", 1, 0, F::bind_off, Lean::none, "bo"),
+    // A short row's stitches beyond its turn, and a machine pass's needles it does not
+    // reach: left as they were, with no yarn across them.
+    unreached(plain("held", 1, 1, F::slip, Lean::none, "held")),
 });
 
 // Crosses in the Stitch Maps notation n/m XX and n/c/n XX, generated: n stitches cross

@@ -69,6 +69,9 @@ struct StitchDef {
   // them, and gathered into one loop again (k5tog, or the others passed over the first).
   // It works one stitch and leaves one; 0: not a bobble.
   int bobble_loops = 0, bobble_rows = 0;
+  // Held (a short row turns before it): the stitch is left on its needle as it was and
+  // no yarn passes it, so, unlike a slip, it leaves no float.
+  bool unreached = false;
   // The stitch as it shows on the face when worked on a wrong-side row (k shows as p);
   // empty if it has no wrong-side form.
   std::string_view wrong_side_face;

@@ -132,6 +132,8 @@ constexpr Entry entries[] = {
       "wrap 4: knit 4, slip them back, wind the yarn twice round them, slip them again: the four drawn together"}},
     {"bo", {"bind off|cast off|b/o|bo st|bo sts|bind off st|bind off sts|cast off st|cast off sts", "BO", "bo", true,
       "bind off within a row: each bo knitted and passed over the next, one stitch less; written with a count (BO 3 sts) it also knits the stitch the last is passed over, left on the needle, as printed counts mean it"}},
+    {"held", {"hold|on hold|unworked", "H", "held", true,
+      "held: a stitch the row does not reach (a short row turns before it, a machine's pass stops short of it): left on the needle as it was, with no yarn across it"}},
 };
 
 // A generated cross: its notation is its name; its symbol the name without the space.

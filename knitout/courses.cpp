@@ -1,0 +1,437 @@
+// The machine's loops grouped into courses, and each course said as a pattern's stitches.
+//
+// A course is what the carriers knit between two transfers, until a needle would be
+// worked twice: one pass of a sheet, both passes of a round of a tube, every carrier's
+// pass of an intarsia row. When it ends, every needle holding loops is a live stitch, in
+// face order (flat: left to right along the beds; a tube: the front bed left to right,
+// then the back bed right to left, its outside). Each live stitch is then one of:
+//   a loop knitted through the loops of some live stitches of the course before  k, p, decreases
+//   those stitches in another order, all single                               a cable (crossing order:
+//                                                                               the group that settled first is on top)
+//   a tuck on top of a stitch                                                  tuck
+//   a new loop on an empty needle                                              yo (the cast-on, increases)
+//   a stitch left as it was                                                    slip (yarn passed it) or held
+//   the old loops a split moved off beside its new loop                        kfb
+// and a live stitch of the course before that is on no needle was dropped: drop.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "knitout.hpp"
+
+namespace knitc::knitout {
+
+namespace {
+
+struct Position {
+  Needle needle;
+  double x = 0.0;          // across the beds, in needle pitches
+  std::vector<int> pile;   // loops, bottom to top
+};
+
+struct Crossing {  // a carrier at a needle, in the order it went
+  int carrier;
+  double x;
+  int direction;
+  bool front;
+};
+
+struct RawCourse {
+  int first_operation = 0;
+  double racking = 0.0;
+  std::vector<int> made;             // loops made, in order
+  std::vector<Crossing> went;        // stitches and misses, in order
+  std::vector<Position> positions;   // at its end, unordered
+};
+
+double across(Needle n, double racking) { return front(n.bed) ? n.index : n.index + racking + 1e-3; }
+
+const StitchId none = static_cast<StitchId>(-1);
+
+StitchId cable_stitch(int width, int held, bool held_on_top) {
+  for (std::size_t i = 0; i < stitch_table().size(); ++i) {
+    const StitchDef& d = stitch_table()[i];
+    if (d.family == StitchFamily::cable && d.consumes == width && d.cable.held == held && d.cable.front == held_on_top &&
+        d.cable.middle == 0 && !d.cable.purl_background && !d.cable.purled && !d.twisted)
+      return static_cast<StitchId>(i);
+  }
+  return none;
+}
+
+}  // namespace
+
+Imported import_program(const Program& program, const Profile& profile) {
+  Imported out;
+  out.profile = profile;
+  out.warnings = program.warnings;
+  Machine machine(program, profile);
+
+  // Run the machine, cutting courses.
+  std::vector<RawCourse> courses;
+  std::vector<int> course_of;  // per loop
+  bool open = false;
+  auto has_open_loop = [&](Needle n) {
+    for (int l : machine.pile(n))
+      if (course_of[static_cast<std::size_t>(l)] == static_cast<int>(courses.size()) - 1 && open) return true;
+    return false;
+  };
+  auto close = [&] {
+    if (!open) return;
+    RawCourse& c = courses.back();
+    for (Needle n : machine.occupied()) c.positions.push_back({n, across(n, c.racking), machine.pile(n)});
+    open = false;
+  };
+  std::size_t plated = 0, splits = 0;
+  int plated_line = 0, last_drop_line = 0;
+  for (std::size_t i = 0; i < program.operations.size(); ++i) {
+    const Operation& op = program.operations[i];
+    const bool stitch = (op.op == Opcode::knit || op.op == Opcode::tuck || op.op == Opcode::split) && !op.carriers.empty();
+    const bool moves = op.op == Opcode::xfer || op.op == Opcode::drop ||
+                       ((op.op == Opcode::knit || op.op == Opcode::split) && op.carriers.empty());
+    if (open && (stitch || moves) &&
+        (has_open_loop(op.needle) || ((op.op == Opcode::split || op.op == Opcode::xfer) && has_open_loop(op.target))))
+      close();
+    const std::size_t before = machine.loops().size();
+    if (moves && !open) last_drop_line = op.line;
+    machine.run(i);
+    course_of.resize(machine.loops().size(), -1);
+    if (machine.loops().size() > before) {
+      if (!open) {
+        courses.push_back({});
+        courses.back().first_operation = static_cast<int>(i);
+        courses.back().racking = machine.racking();
+        open = true;
+      }
+      RawCourse& c = courses.back();
+      course_of[before] = static_cast<int>(courses.size()) - 1;
+      c.made.push_back(static_cast<int>(before));
+      if (op.carriers.size() > 1 && plated++ == 0) plated_line = op.line;
+      if (op.op == Opcode::split) ++splits;
+      (front(op.needle.bed) ? out.front_loops : out.back_loops) += 1;
+    }
+    if (open && (stitch || op.op == Opcode::miss))
+      for (int carrier : op.carriers)
+        courses.back().went.push_back({carrier, across(op.needle, courses.back().racking), op.direction, front(op.needle.bed)});
+  }
+  close();
+  if (courses.empty())
+    throw KnitoutError(program.file + ":1: the program makes no loops; a knitout program knits, tucks or splits with a carrier", 1);
+  if (plated > 0)
+    out.warnings.push_back(program.file + ":" + std::to_string(plated_line) + ": warning: " + std::to_string(plated) +
+                           " loops are plated (made with several carriers); each is drawn in its first carrier's yarn");
+
+  // Flat or round: a tube's rounds knit the front bed one way and the back bed the other.
+  int rounds = 0, sheets = 0;
+  for (const RawCourse& c : courses) {
+    std::set<std::pair<int, int>> ways;  // (carrier, direction) per bed side
+    bool f = false, b = false, tube = false;
+    std::map<int, std::pair<int, int>> by_carrier;  // carrier -> (front direction, back direction)
+    for (int l : c.made) {
+      const Loop& loop = machine.loops()[static_cast<std::size_t>(l)];
+      auto& d = by_carrier[loop.carriers.front()];
+      (front(loop.needle.bed) ? f : b) = true;
+      (front(loop.needle.bed) ? d.first : d.second) = loop.direction;
+    }
+    for (const auto& [carrier, d] : by_carrier) tube = tube || (d.first != 0 && d.second != 0 && d.first != d.second);
+    if (f && b) (tube ? rounds : sheets) += 1;
+  }
+  const bool round = rounds > sheets;
+
+  Pattern& pattern = out.pattern;
+  pattern.knitting = round ? Knitting::round : Knitting::flat;
+  pattern.name = program.file;
+  // The yarns: one per carrier that made a loop, sorted by name.
+  std::vector<std::string> names;
+  for (const Loop& l : machine.loops())
+    for (int c : l.carriers) names.push_back(program.carriers[static_cast<std::size_t>(c)]);
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  std::vector<int> yarn_of(program.carriers.size(), 0);
+  for (std::size_t c = 0; c < program.carriers.size(); ++c)
+    yarn_of[c] = static_cast<int>(std::lower_bound(names.begin(), names.end(), program.carriers[c]) - names.begin());
+  // The fabric's size from the machine's gauge: a loop as wide as the needles it spans
+  // (full gauge one pitch, half gauge two), the yarn a quarter of that as in the seed paper.
+  std::map<int, long long> gaps;
+  for (const RawCourse& c : courses) {
+    std::vector<int> on_front;
+    for (const Position& p : c.positions)
+      if (p.needle.bed == Bed::f) on_front.push_back(p.needle.index);
+    std::sort(on_front.begin(), on_front.end());
+    for (std::size_t k = 1; k < on_front.size(); ++k)
+      if (on_front[k] - on_front[k - 1] <= 3) ++gaps[on_front[k] - on_front[k - 1]];
+  }
+  int spacing = 1;
+  long long most = 0;
+  for (const auto& [gap, count] : gaps)
+    if (count > most) most = count, spacing = gap;
+  const double pitch = 25.4 / profile.gauge;
+  pattern.gauge.loop_width = pitch * spacing;
+  pattern.gauge.loop_height = 1.05 * pattern.gauge.loop_width;
+  pattern.gauge.thickness = 0.5 * pattern.gauge.loop_width;
+  static const char* palette[] = {"#d9c8a9", "#8a1c2b", "#2f5d8a", "#e0b33a", "#3c7a4a", "#6b4a8a", "#c8643c", "#404040"};
+  for (std::size_t y = 0; y < names.size(); ++y) {
+    Yarn yarn;
+    yarn.id = names[y];
+    yarn.diameter = 0.25 * pattern.gauge.loop_width;
+    yarn.core_diameter = yarn.diameter / yarn::free_per_core;
+    yarn.color = palette[y % std::size(palette)];
+    pattern.yarns.push_back(yarn);
+  }
+  for (const Operation& op : program.operations) {  // x-vis-color #rrggbb C
+    if (op.op != Opcode::extension || !op.words.starts_with("x-vis-color")) continue;
+    std::vector<std::string> w;
+    for (std::size_t at = 0; at < op.words.size();) {
+      const std::size_t e = std::min(op.words.find(' ', at), op.words.size());
+      if (e > at) w.push_back(op.words.substr(at, e - at));
+      at = e + 1;
+    }
+    if (w.size() != 3 || w[1].size() != 7 || w[1][0] != '#') continue;
+    for (Yarn& y : pattern.yarns)
+      if (y.id == w[2]) y.color = w[1];
+  }
+
+  // Each course in stitches.
+  const std::vector<Loop>& loops = machine.loops();
+  std::vector<int> stitch_of(loops.size(), -1);
+  std::size_t live = 0;
+  const StitchId k = stitch_id("k"), p = stitch_id("p"), yo = stitch_id("yo"), tuck = stitch_id("tuck"), drop = stitch_id("drop"),
+                 held = stitch_id("held"), kfb = stitch_id("kfb"), pfb = stitch_id("pfb");
+  std::vector<int> on_needles;  // the loops stitch_of names
+  for (std::size_t ci = 0; ci < courses.size(); ++ci) {
+    RawCourse& raw = courses[ci];
+    const Operation& first = program.operations[static_cast<std::size_t>(raw.first_operation)];
+    auto fail = [&](const std::string& message, const std::string& hint) {
+      throw KnitoutError(located(program, first, message, hint), first.line);
+    };
+    std::vector<Position>& pos = raw.positions;
+    std::sort(pos.begin(), pos.end(), [&](const Position& a, const Position& b) {
+      if (round && front(a.needle.bed) != front(b.needle.bed)) return front(a.needle.bed);
+      if (round && !front(a.needle.bed)) return a.x > b.x;
+      return a.x < b.x;
+    });
+    const int mine = static_cast<int>(ci);
+    auto is_new = [&](int l) { return course_of[static_cast<std::size_t>(l)] == mine; };
+    if (ci == 0) {  // the cast-on: loops on empty needles
+      for (const Position& q : pos)
+        for (int l : q.pile)
+          if (!is_new(l)) fail("the first course knits into loops that were never made", "cast on first");
+      pattern.cast_on = static_cast<int>(pos.size());
+      pattern.cast_on_yarn = yarn_of[static_cast<std::size_t>(loops[static_cast<std::size_t>(raw.made.front())].carriers.front())];
+      for (std::size_t j = 0; j < pos.size(); ++j)
+        for (int l : pos[j].pile) {
+          stitch_of[static_cast<std::size_t>(l)] = static_cast<int>(j);
+          on_needles.push_back(l);
+        }
+      live = pos.size();
+      continue;
+    }
+    Course course;
+    course.where = {program.file, first.line};
+    const Loop& opener = loops[static_cast<std::size_t>(raw.made.front())];
+    course.side = round || opener.direction < 0 ? Side::right : Side::wrong;
+    const int course_yarn = yarn_of[static_cast<std::size_t>(opener.carriers.front())];
+
+    enum class Kind { made, tucked, unworked, partner };
+    struct Info {
+      Kind kind = Kind::unworked;
+      std::vector<int> stitches;  // of the course before, sorted
+      int loop = -1;              // the new loop (made, tucked)
+      int top = -1;               // the stitch of the loop on top (made)
+    };
+    std::vector<Info> info(pos.size());
+    std::vector<char> used(live, 0), split_parent(loops.size(), 0);
+    for (int l : raw.made)
+      if (loops[static_cast<std::size_t>(l)].made_by == Opcode::split)
+        for (int q : loops[static_cast<std::size_t>(l)].parents) split_parent[static_cast<std::size_t>(q)] = 1;
+    auto stitches_of = [&](const std::vector<int>& ls) {
+      std::vector<int> s;
+      for (int l : ls) {
+        const int st = stitch_of[static_cast<std::size_t>(l)];
+        if (st < 0) fail("a loop reappears that was not on a needle at the last course", "this is a bug in knitc's machine; please report it");
+        s.push_back(st);
+      }
+      std::sort(s.begin(), s.end());
+      s.erase(std::unique(s.begin(), s.end()), s.end());
+      return s;
+    };
+    for (std::size_t j = 0; j < pos.size(); ++j) {
+      Info& f = info[j];
+      const auto& pile = pos[j].pile;
+      std::vector<int> old;
+      int fresh = 0;
+      for (int l : pile) {
+        if (is_new(l)) ++fresh;
+        else old.push_back(l);
+      }
+      if (fresh == 0) {
+        const bool all_split = std::all_of(old.begin(), old.end(), [&](int l) { return split_parent[static_cast<std::size_t>(l)] != 0; });
+        f.kind = all_split ? Kind::partner : Kind::unworked;
+        f.stitches = stitches_of(old);
+      } else if (pile.size() == 1 && loops[static_cast<std::size_t>(pile[0])].made_by != Opcode::tuck) {
+        f.kind = Kind::made;
+        f.loop = pile[0];
+        const Loop& l = loops[static_cast<std::size_t>(pile[0])];
+        f.stitches = stitches_of(l.parents);
+        if (!l.parents.empty()) f.top = stitch_of[static_cast<std::size_t>(l.parents.back())];
+      } else if (fresh == 1 && is_new(pile.back()) && loops[static_cast<std::size_t>(pile.back())].made_by == Opcode::tuck) {
+        f.kind = Kind::tucked;
+        f.loop = pile.back();
+        f.stitches = stitches_of(old);
+      } else {
+        fail("needle " + name(pos[j].needle) + " holds loops in an order knitc cannot yet draw",
+             "knit, tuck or transfer each needle once between transfers");
+      }
+      if (f.kind != Kind::partner)
+        for (int s : f.stitches) used[static_cast<std::size_t>(s)] = 1;
+    }
+    // Whether a yarn of the course passed x without a stitch there.
+    auto crossed = [&](double x, int& carrier) {
+      for (std::size_t a = 0; a < raw.went.size(); ++a)
+        for (std::size_t b = a + 1; b < raw.went.size(); ++b) {
+          if (raw.went[b].carrier != raw.went[a].carrier) continue;
+          if (raw.went[a].direction == raw.went[b].direction &&
+              std::min(raw.went[a].x, raw.went[b].x) < x - 1e-6 && std::max(raw.went[a].x, raw.went[b].x) > x + 1e-6) {
+            carrier = raw.went[a].carrier;
+            return true;
+          }
+          break;
+        }
+      return false;
+    };
+    auto yarn_for = [&](int loop) { return yarn_of[static_cast<std::size_t>(loops[static_cast<std::size_t>(loop)].carriers.front())]; };
+    std::size_t next = 0;
+    auto emit = [&](StitchId s, int yarn) { course.ops.push_back({s, yarn}); };
+    for (std::size_t j = 0; j < pos.size();) {
+      const Info& f = info[j];
+      while (next < live && !used[next]) emit(drop, course_yarn), ++next;
+      const bool purl_side = !round && !front(pos[j].needle.bed);
+      if (f.kind == Kind::partner) {
+        // A split's old loops beside its new loop: an increase, both loops through the stitch.
+        if (j + 1 < pos.size() && info[j + 1].kind == Kind::made && info[j + 1].stitches == f.stitches &&
+            !f.stitches.empty() && static_cast<std::size_t>(f.stitches.front()) == next) {
+          emit(purl_side ? pfb : kfb, yarn_for(info[j + 1].loop));
+          next = static_cast<std::size_t>(f.stitches.back()) + 1;
+          j += 2;
+        } else {
+          emit(yo, course_yarn);  // beside it the other way: drawn as the split's loop's neighbour
+          ++j;
+        }
+        continue;
+      }
+      const bool contiguous = !f.stitches.empty() && static_cast<std::size_t>(f.stitches.front()) == next &&
+                              f.stitches.back() - f.stitches.front() + 1 == static_cast<int>(f.stitches.size());
+      if (f.stitches.empty()) {
+        emit(yo, f.loop >= 0 ? yarn_for(f.loop) : course_yarn);
+        ++j;
+        continue;
+      }
+      if (contiguous) {
+        const int n = static_cast<int>(f.stitches.size());
+        const bool split_next = j + 1 < pos.size() && info[j + 1].kind == Kind::partner && info[j + 1].stitches == f.stitches;
+        StitchId s = none;
+        if (f.kind == Kind::made && split_next) {
+          s = purl_side ? pfb : kfb;
+          ++j;
+        } else if (f.kind == Kind::made) {
+          const bool left_top = f.top == f.stitches.front(), right_top = f.top == f.stitches.back();
+          if (n == 1) s = purl_side ? p : k;
+          else if (n == 2) s = stitch_id(purl_side ? (left_top ? "p2tog" : "ssp") : (left_top ? "k2tog" : "ssk"));
+          else if (n == 3) s = purl_side ? stitch_id("p3tog") : stitch_id(left_top ? "k3tog" : right_top ? "sssk" : "cdd");
+          else if (n == 5) s = stitch_id(purl_side ? "p5tog" : "k5tog");
+          else fail(std::to_string(n) + " loops are knitted together on " + name(pos[j].needle) + "; knitc draws decreases of 2, 3 or 5",
+                    "decrease in steps of at most three loops");
+          emit(s, yarn_for(f.loop));
+        } else if (f.kind == Kind::tucked) {
+          if (n != 1) fail("a tuck on " + name(pos[j].needle) + " over " + std::to_string(n) + " stacked loops; knitc draws a tuck on one stitch",
+                           "knit the stacked loops together before tucking on them");
+          emit(tuck, yarn_for(f.loop));
+        } else {
+          if (n != 1) fail("loops of " + std::to_string(n) + " stitches stacked on " + name(pos[j].needle) + " and left unknitted",
+                           "knit them together in the next course");
+          int carrier = -1;
+          if (crossed(pos[j].x, carrier))
+            emit(stitch_id(purl_side ? "sl wyif" : "sl wyib"), yarn_of[static_cast<std::size_t>(carrier)]);
+          else
+            emit(held, course_yarn);
+        }
+        next = static_cast<std::size_t>(f.stitches.back()) + 1;
+        ++j;
+        continue;
+      }
+      // Single stitches in another order: a cable, the two groups changing places.
+      std::size_t width = 0;
+      {
+        int low = 1 << 30, high = -1;
+        for (std::size_t t = j; t < pos.size() && t - j < 8; ++t) {
+          if (info[t].stitches.size() != 1 || info[t].kind != Kind::made) break;
+          low = std::min(low, info[t].stitches[0]);
+          high = std::max(high, info[t].stitches[0]);
+          if (static_cast<std::size_t>(low) == next && high - low == static_cast<int>(t - j) && t > j) {
+            width = t - j + 1;
+            break;
+          }
+        }
+      }
+      StitchId s = none;
+      if (width > 0) {
+        // The order after: the right group (`held`, first here) then the left one.
+        const int w = static_cast<int>(width);
+        const int held_n = static_cast<int>(next) + w - info[j].stitches[0];
+        bool ok = held_n > 0 && held_n < w;
+        for (int t = 0; ok && t < w; ++t) {
+          const int want = t < held_n ? static_cast<int>(next) + w - held_n + t : static_cast<int>(next) + t - held_n;
+          ok = info[j + static_cast<std::size_t>(t)].stitches[0] == want;
+        }
+        if (ok) {
+          // The group whose loops reached their needles first lies on top.
+          int right_settled = -1, left_settled = -1;
+          for (int t = 0; t < w; ++t) {
+            const Loop& l = loops[static_cast<std::size_t>(info[j + static_cast<std::size_t>(t)].loop)];
+            int settled = -1;
+            for (int q : l.parents) settled = std::max(settled, machine.moved_at()[static_cast<std::size_t>(q)]);
+            (t < held_n ? right_settled : left_settled) = std::max(t < held_n ? right_settled : left_settled, settled);
+          }
+          s = cable_stitch(w, held_n, right_settled < left_settled);
+        }
+      }
+      if (s == none)
+        fail("the loops knitted on " + name(pos[j].needle) + " and beside it were moved past each other in a way knitc cannot yet draw",
+             "knitc draws crosses of two groups of up to four stitches each, swapped by racked transfers");
+      emit(s, yarn_for(info[j].loop));
+      next += width;
+      j += width;
+    }
+    while (next < live) {
+      if (used[next]) fail("the stitches of the course before come out of order", "this is a bug in knitc's reading; please report it");
+      emit(drop, course_yarn);
+      ++next;
+    }
+    for (int l : on_needles) stitch_of[static_cast<std::size_t>(l)] = -1;
+    on_needles.clear();
+    for (std::size_t j = 0; j < pos.size(); ++j)
+      for (int l : pos[j].pile) {
+        stitch_of[static_cast<std::size_t>(l)] = static_cast<int>(j);
+        on_needles.push_back(l);
+      }
+    live = pos.size();
+    pattern.courses.push_back(std::move(course));
+  }
+  // Loops taken off after the last course (a final drop) are drawn as they were: open.
+  std::size_t dropped_at_end = 0;
+  for (const Position& q : courses.back().positions)
+    if (machine.pile(q.needle) != q.pile) ++dropped_at_end;
+  if (dropped_at_end > 0)
+    out.warnings.push_back(program.file + ":" + std::to_string(last_drop_line) + ": warning: the program ends by dropping " +
+                           std::to_string(dropped_at_end) + " live loops of its last course, unsecured; they are drawn open, "
+                           "as on the needles (on the machine they would run unless bound off or held by waste yarn)");
+  (void)splits;
+  return out;
+}
+
+Imported import_text(std::string_view text, const std::string& file) {
+  const Program program = parse(text, file);
+  return import_program(program, profile_for(program));
+}
+
+}  // namespace knitc::knitout
