@@ -17,7 +17,10 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <cstdio>
+#include <cstdlib>
 
+#include "knit_graph/knit_graph.hpp"
 #include "knitout.hpp"
 
 namespace knitc::knitout {
@@ -48,6 +51,7 @@ struct RawCourse {
 double across(Needle n, double racking) { return front(n.bed) ? n.index : n.index + racking + 1e-3; }
 
 const StitchId none = static_cast<StitchId>(-1);
+const StitchId drop = stitch_id("drop"), bo = stitch_id("bo");
 
 StitchId cable_stitch(int width, int held, bool held_on_top) {
   for (std::size_t i = 0; i < stitch_table().size(); ++i) {
@@ -121,6 +125,44 @@ Imported import_program(const Program& program, const Profile& profile) {
     out.warnings.push_back(program.file + ":" + std::to_string(plated_line) + ": warning: " + std::to_string(plated) +
                            " loops are plated (made with several carriers); each is drawn in its first carrier's yarn");
 
+  // A bind-off's steps, each a course of a loop or two knitted through the last step's
+  // loop moved onto an older stitch, are one course: every loop of the chain but the last
+  // is bound off (bo), as a pattern's bind-off row says it.
+  {
+    std::vector<RawCourse> runs;
+    std::vector<int> run_of(courses.size(), 0);
+    bool small_run = false;
+    for (std::size_t c = 0; c < courses.size(); ++c) {
+      RawCourse& raw = courses[c];
+      bool step = false;
+      if (!runs.empty() && small_run && raw.made.size() <= 2) {
+        const int last = static_cast<int>(runs.size()) - 1;
+        for (int l : raw.made) {
+          bool chained = false, older = false;
+          for (int q : machine.loops()[static_cast<std::size_t>(l)].parents) {
+            const int at = course_of[static_cast<std::size_t>(q)];
+            chained = chained || at == last;
+            older = older || (at >= 0 && at < last);
+          }
+          step = step || (chained && older);
+        }
+      }
+      if (step) {
+        RawCourse& run = runs.back();
+        run.made.insert(run.made.end(), raw.made.begin(), raw.made.end());
+        run.went.insert(run.went.end(), raw.went.begin(), raw.went.end());
+        run.positions = std::move(raw.positions);
+      } else {
+        runs.push_back(std::move(raw));
+        small_run = runs.back().made.size() <= 2;
+      }
+      const int index = static_cast<int>(runs.size()) - 1;
+      for (int l : runs.back().made) course_of[static_cast<std::size_t>(l)] = index;
+      run_of[c] = index;
+    }
+    courses = std::move(runs);
+  }
+
   // Flat or round: a tube's rounds knit the front bed one way and the back bed the other.
   int rounds = 0, sheets = 0;
   for (const RawCourse& c : courses) {
@@ -134,7 +176,9 @@ Imported import_program(const Program& program, const Profile& profile) {
       (front(loop.needle.bed) ? d.first : d.second) = loop.direction;
     }
     for (const auto& [carrier, d] : by_carrier) tube = tube || (d.first != 0 && d.second != 0 && d.first != d.second);
-    if (f && b) (tube ? rounds : sheets) += 1;
+    // Weighed by loops: a bind-off's steps (split on one bed, knit on the other) are not rounds.
+    if (f && b) (tube ? rounds : sheets) += static_cast<int>(c.made.size());
+    if (getenv("KNITOUT_DEBUG") && f && b) fprintf(stderr, "course at line %d: %s\n", program.operations[c.first_operation].line, tube ? "tube" : "sheet");
   }
   const bool round = rounds > sheets;
 
@@ -195,9 +239,11 @@ Imported import_program(const Program& program, const Profile& profile) {
   const std::vector<Loop>& loops = machine.loops();
   std::vector<int> stitch_of(loops.size(), -1);
   std::size_t live = 0;
-  const StitchId k = stitch_id("k"), p = stitch_id("p"), yo = stitch_id("yo"), tuck = stitch_id("tuck"), drop = stitch_id("drop"),
+  const StitchId k = stitch_id("k"), p = stitch_id("p"), yo = stitch_id("yo"), tuck = stitch_id("tuck"),
                  held = stitch_id("held"), kfb = stitch_id("kfb"), pfb = stitch_id("pfb");
   std::vector<int> on_needles;  // the loops stitch_of names
+  std::vector<char> placed(loops.size(), 0), split_parent(loops.size(), 0);
+  int approximated = 0;
   for (std::size_t ci = 0; ci < courses.size(); ++ci) {
     RawCourse& raw = courses[ci];
     const Operation& first = program.operations[static_cast<std::size_t>(raw.first_operation)];
@@ -240,7 +286,8 @@ Imported import_program(const Program& program, const Profile& profile) {
       int top = -1;               // the stitch of the loop on top (made)
     };
     std::vector<Info> info(pos.size());
-    std::vector<char> used(live, 0), split_parent(loops.size(), 0);
+    std::string odd;  // why the course can only be drawn approximately
+    std::vector<char> used(live, 0);
     for (int l : raw.made)
       if (loops[static_cast<std::size_t>(l)].made_by == Opcode::split)
         for (int q : loops[static_cast<std::size_t>(l)].parents) split_parent[static_cast<std::size_t>(q)] = 1;
@@ -271,20 +318,38 @@ Imported import_program(const Program& program, const Profile& profile) {
       } else if (pile.size() == 1 && loops[static_cast<std::size_t>(pile[0])].made_by != Opcode::tuck) {
         f.kind = Kind::made;
         f.loop = pile[0];
-        const Loop& l = loops[static_cast<std::size_t>(pile[0])];
-        f.stitches = stitches_of(l.parents);
-        if (!l.parents.empty()) f.top = stitch_of[static_cast<std::size_t>(l.parents.back())];
+        // Through the older loops; a bind-off's chain also goes through its own last loop.
+        std::vector<int> older;
+        for (int q : loops[static_cast<std::size_t>(pile[0])].parents)
+          if (!is_new(q)) older.push_back(q);
+        f.stitches = stitches_of(older);
+        if (!older.empty()) f.top = stitch_of[static_cast<std::size_t>(older.back())];
       } else if (fresh == 1 && is_new(pile.back()) && loops[static_cast<std::size_t>(pile.back())].made_by == Opcode::tuck) {
         f.kind = Kind::tucked;
         f.loop = pile.back();
         f.stitches = stitches_of(old);
-      } else {
-        fail("needle " + name(pos[j].needle) + " holds loops in an order knitc cannot yet draw",
-             "knit, tuck or transfer each needle once between transfers");
+      } else {  // new loops under old ones, or several new: drawn as one loop through the old
+        odd = "needle " + name(pos[j].needle) + " holds new loops under or among old ones";
+        f.kind = Kind::made;
+        for (int l : pile)
+          if (is_new(l) && f.loop < 0) f.loop = l;
+        f.stitches = stitches_of(old);
       }
       if (f.kind != Kind::partner)
         for (int s : f.stitches) used[static_cast<std::size_t>(s)] = 1;
     }
+    // The stitches a loop of the course went through that is on no needle now: bound off
+    // (a later loop of the course was knitted through it).
+    std::vector<char> bound(live, 0);
+    for (const Position& q : pos)
+      for (int l : q.pile) placed[static_cast<std::size_t>(l)] = 1;
+    for (int l : raw.made) {
+      if (placed[static_cast<std::size_t>(l)]) continue;
+      for (int q : loops[static_cast<std::size_t>(l)].parents)
+        if (!is_new(q) && stitch_of[static_cast<std::size_t>(q)] >= 0) bound[static_cast<std::size_t>(stitch_of[static_cast<std::size_t>(q)])] = 1;
+    }
+    for (const Position& q : pos)
+      for (int l : q.pile) placed[static_cast<std::size_t>(l)] = 0;
     // Whether a yarn of the course passed x without a stitch there.
     auto crossed = [&](double x, int& carrier) {
       for (std::size_t a = 0; a < raw.went.size(); ++a)
@@ -302,14 +367,22 @@ Imported import_program(const Program& program, const Profile& profile) {
     auto yarn_for = [&](int loop) { return yarn_of[static_cast<std::size_t>(loops[static_cast<std::size_t>(loop)].carriers.front())]; };
     std::size_t next = 0;
     auto emit = [&](StitchId s, int yarn) { course.ops.push_back({s, yarn}); };
+    struct Unsupported {
+      std::string why;
+    };
+    auto unsupported = [](const std::string& message, const std::string& hint) {
+      throw Unsupported{hint.empty() ? message : message + "; " + hint};
+    };
+    try {
+    if (!odd.empty()) unsupported(odd, "");
     for (std::size_t j = 0; j < pos.size();) {
       const Info& f = info[j];
-      while (next < live && !used[next]) emit(drop, course_yarn), ++next;
+      while (next < live && !used[next]) emit(bound[next] ? bo : drop, course_yarn), ++next;
       const bool purl_side = !round && !front(pos[j].needle.bed);
       if (f.kind == Kind::partner) {
         // A split's old loops beside its new loop: an increase, both loops through the stitch.
         if (j + 1 < pos.size() && info[j + 1].kind == Kind::made && info[j + 1].stitches == f.stitches &&
-            !f.stitches.empty() && static_cast<std::size_t>(f.stitches.front()) == next) {
+            f.stitches.size() == 1 && static_cast<std::size_t>(f.stitches.front()) == next) {
           emit(purl_side ? pfb : kfb, yarn_for(info[j + 1].loop));
           next = static_cast<std::size_t>(f.stitches.back()) + 1;
           j += 2;
@@ -330,8 +403,8 @@ Imported import_program(const Program& program, const Profile& profile) {
         const int n = static_cast<int>(f.stitches.size());
         const bool split_next = j + 1 < pos.size() && info[j + 1].kind == Kind::partner && info[j + 1].stitches == f.stitches;
         StitchId s = none;
-        if (f.kind == Kind::made && split_next) {
-          s = purl_side ? pfb : kfb;
+        if (f.kind == Kind::made && split_next && n == 1) {
+          emit(purl_side ? pfb : kfb, yarn_for(f.loop));
           ++j;
         } else if (f.kind == Kind::made) {
           const bool left_top = f.top == f.stitches.front(), right_top = f.top == f.stitches.back();
@@ -339,15 +412,15 @@ Imported import_program(const Program& program, const Profile& profile) {
           else if (n == 2) s = stitch_id(purl_side ? (left_top ? "p2tog" : "ssp") : (left_top ? "k2tog" : "ssk"));
           else if (n == 3) s = purl_side ? stitch_id("p3tog") : stitch_id(left_top ? "k3tog" : right_top ? "sssk" : "cdd");
           else if (n == 5) s = stitch_id(purl_side ? "p5tog" : "k5tog");
-          else fail(std::to_string(n) + " loops are knitted together on " + name(pos[j].needle) + "; knitc draws decreases of 2, 3 or 5",
+          else unsupported(std::to_string(n) + " loops are knitted together on " + name(pos[j].needle) + "; knitc draws decreases of 2, 3 or 5",
                     "decrease in steps of at most three loops");
           emit(s, yarn_for(f.loop));
         } else if (f.kind == Kind::tucked) {
-          if (n != 1) fail("a tuck on " + name(pos[j].needle) + " over " + std::to_string(n) + " stacked loops; knitc draws a tuck on one stitch",
+          if (n != 1) unsupported("a tuck on " + name(pos[j].needle) + " over " + std::to_string(n) + " stacked loops; knitc draws a tuck on one stitch",
                            "knit the stacked loops together before tucking on them");
           emit(tuck, yarn_for(f.loop));
         } else {
-          if (n != 1) fail("loops of " + std::to_string(n) + " stitches stacked on " + name(pos[j].needle) + " and left unknitted",
+          if (n != 1) unsupported("loops of " + std::to_string(n) + " stitches stacked on " + name(pos[j].needle) + " and left unknitted",
                            "knit them together in the next course");
           int carrier = -1;
           if (crossed(pos[j].x, carrier))
@@ -395,17 +468,58 @@ Imported import_program(const Program& program, const Profile& profile) {
           s = cable_stitch(w, held_n, right_settled < left_settled);
         }
       }
-      if (s == none)
-        fail("the loops knitted on " + name(pos[j].needle) + " and beside it were moved past each other in a way knitc cannot yet draw",
+      if (s == none) {
+        std::string seen;
+        for (std::size_t t = j; t < pos.size() && t < j + 8; ++t) {
+          seen += " " + name(pos[t].needle) + ":";
+          for (int q : info[t].stitches) seen += std::to_string(q - static_cast<int>(next)) + ",";
+          seen += std::to_string(static_cast<int>(info[t].kind));
+        }
+        unsupported("the loops knitted on " + name(pos[j].needle) + " and beside it were moved past each other in a way knitc cannot yet draw (" + seen + ")",
              "knitc draws crosses of two groups of up to four stitches each, swapped by racked transfers");
+      }
       emit(s, yarn_for(info[j].loop));
       next += width;
       j += width;
     }
     while (next < live) {
-      if (used[next]) fail("the stitches of the course before come out of order", "this is a bug in knitc's reading; please report it");
-      emit(drop, course_yarn);
+      if (used[next]) unsupported("the stitches of the course before are knitted out of their order", "");
+      emit(bound[next] ? bo : drop, course_yarn);
       ++next;
+    }
+    } catch (const Unsupported& e) {
+      // Drawn approximately: each live stitch through as many stitches of the course before
+      // as its loops came from, in order; the rest bound off.
+      course.ops.clear();
+      std::size_t taken = 0;
+      for (std::size_t j = 0; j < pos.size(); ++j) {
+        const Info& f = info[j];
+        const std::size_t n = f.kind == Kind::partner ? 0 : std::min<std::size_t>({f.stitches.size(), 3, live - taken});
+        const bool purl_side = !round && !front(pos[j].needle.bed);
+        const int yarn = f.loop >= 0 ? yarn_for(f.loop) : course_yarn;
+        StitchId s = yo;
+        if (n == 1) s = f.kind == Kind::made ? (purl_side ? p : k) : f.kind == Kind::tucked ? tuck : held;
+        if (n == 2) s = stitch_id(purl_side ? "p2tog" : "k2tog");
+        if (n == 3) s = stitch_id(purl_side ? "p3tog" : "k3tog");
+        emit(s, yarn);
+        taken += n;
+      }
+      for (; taken < live; ++taken) emit(bo, course_yarn);
+      if (approximated++ < 5)
+        out.warnings.push_back(program.file + ":" + std::to_string(first.line) + ": warning: drawn approximately: " + e.why);
+    }
+    for (int l : raw.made)
+      if (loops[static_cast<std::size_t>(l)].made_by == Opcode::split)
+        for (int q : loops[static_cast<std::size_t>(l)].parents) split_parent[static_cast<std::size_t>(q)] = 0;
+    if (getenv("KNITOUT_DEBUG") && (static_cast<std::size_t>(consumed(course)) != live || static_cast<std::size_t>(produced(course)) != pos.size())) {
+      fprintf(stderr, "line %d: consumed %d of %zu, produced %d of %zu:", first.line, consumed(course), live, produced(course), pos.size());
+      for (const Op& o : course.ops) fprintf(stderr, " %s", std::string(stitch(o.stitch).name).c_str());
+      fprintf(stderr, "\n");
+      for (std::size_t j = 0; j < pos.size(); ++j) {
+        fprintf(stderr, "  %s kind %d:", name(pos[j].needle).c_str(), static_cast<int>(info[j].kind));
+        for (int q : info[j].stitches) fprintf(stderr, " %d", q);
+        fprintf(stderr, "\n");
+      }
     }
     for (int l : on_needles) stitch_of[static_cast<std::size_t>(l)] = -1;
     on_needles.clear();
@@ -417,6 +531,27 @@ Imported import_program(const Program& program, const Profile& profile) {
     live = pos.size();
     pattern.courses.push_back(std::move(course));
   }
+  // A drop the knit graph cannot unravel (through a decrease or a held tuck below it):
+  // drawn bound off at that row, and said.
+  for (int tries = 0;; ++tries) {
+    try {
+      knit_graph::build(pattern);
+      break;
+    } catch (const knit_graph::RowError& e) {
+      const std::size_t row = static_cast<std::size_t>(e.course - 1);
+      if (row >= pattern.courses.size()) throw;
+      Course& c = pattern.courses[row];
+      int changed = 0;
+      for (Op& op : c.ops)
+        if (op.stitch == drop) op.stitch = bo, ++changed;
+      if (changed == 0 || tries > 200)
+        throw KnitoutError(program.file + ":" + std::to_string(c.where.line) + ": " + e.what(), c.where.line);
+      out.warnings.push_back(program.file + ":" + std::to_string(c.where.line) + ": warning: " + std::to_string(changed) +
+                             " loops dropped here cannot run down their wales (" + e.what() + "); drawn bound off at this row");
+    }
+  }
+  if (approximated > 5)
+    out.warnings.push_back(program.file + ": warning: " + std::to_string(approximated - 5) + " more courses drawn approximately");
   // Loops taken off after the last course (a final drop) are drawn as they were: open.
   std::size_t dropped_at_end = 0;
   for (const Position& q : courses.back().positions)
