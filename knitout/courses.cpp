@@ -131,7 +131,7 @@ Imported import_program(const Program& program, const Profile& profile) {
   {
     std::vector<RawCourse> runs;
     std::vector<int> run_of(courses.size(), 0);
-    bool small_run = false;
+    bool small_run = false, chain_run = false;
     for (std::size_t c = 0; c < courses.size(); ++c) {
       RawCourse& raw = courses[c];
       bool step = false;
@@ -144,7 +144,9 @@ Imported import_program(const Program& program, const Profile& profile) {
             chained = chained || at == last;
             older = older || (at >= 0 && at < last);
           }
-          step = step || (chained && older);
+          // Through the chain's last loop and an older stitch; or, once a chain, its
+          // loop knitted again on its needle (a bind-off that knits each step twice or more).
+          step = step || (chained && (older || chain_run));
         }
       }
       if (step) {
@@ -152,9 +154,11 @@ Imported import_program(const Program& program, const Profile& profile) {
         run.made.insert(run.made.end(), raw.made.begin(), raw.made.end());
         run.went.insert(run.went.end(), raw.went.begin(), raw.went.end());
         run.positions = std::move(raw.positions);
+        chain_run = true;
       } else {
         runs.push_back(std::move(raw));
         small_run = runs.back().made.size() <= 2;
+        chain_run = false;
       }
       const int index = static_cast<int>(runs.size()) - 1;
       for (int l : runs.back().made) course_of[static_cast<std::size_t>(l)] = index;
