@@ -1,0 +1,240 @@
+// Knitout in: the parser's traps, the machine's refusals (each at its line, with the
+// program's ;!source:), and real machine programs read into the pattern they knit.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+#include "knit_graph/knit_graph.hpp"
+#include "knitout.hpp"
+#include "support.hpp"
+
+namespace fs = std::filesystem;
+using namespace knitc;
+using namespace knitc::knitout;
+
+namespace {
+
+std::string error_of(const std::string& text, const std::string& file = "t.k") {
+  try {
+    import_text(text, file);
+  } catch (const KnitoutError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::map<std::string, int> tally(const Pattern& p) {
+  std::map<std::string, int> n;
+  for (const Course& c : p.courses)
+    for (const Op& op : c.ops) ++n[std::string(stitch(op.stitch).name)];
+  return n;
+}
+
+// A flat sheet of `width` needles, cast on by alternate tucks, then `rows` rows of knit.
+std::string jersey(int width, int rows, const std::string& eol = "\n") {
+  std::string k = ";!knitout-2" + eol + ";;Carriers: 1 2 3" + eol + "inhook 3" + eol;
+  for (int n = width; n >= 1; n -= 2) k += "tuck - f" + std::to_string(n) + " 3" + eol;
+  for (int n = (width % 2 == 0 ? 1 : 2); n <= width; n += 2) k += "tuck + f" + std::to_string(n) + " 3" + eol;
+  for (int r = 0; r < rows; ++r) {
+    if (r % 2 == 0)
+      for (int n = width; n >= 1; --n) k += "knit - f" + std::to_string(n) + " 3" + eol;
+    else
+      for (int n = 1; n <= width; ++n) k += "knit + f" + std::to_string(n) + " 3" + eol;
+  }
+  return k + "outhook 3" + eol;
+}
+
+fs::path real(const std::string& name) { return test::shared_dir() / "knitout" / "real" / name; }
+
+Imported import_file(const fs::path& path) { return import_text(test::read_text(path), path.filename().string()); }
+
+}  // namespace
+
+TEST(KnitoutParse, ReadsTheTrapsOfRealFiles) {
+  const Program p = parse(
+      ";!knitout-2\r\n;;Machine: SWG091N2\r\n;;Carriers: A B 3\r\n"
+      "inhook A B;glued comment\r\n  tuck - f-3 A B  \r\nrack +0.25\r\nrack 0.0\r\nrack -0.75\r\nknit - b12 \r\n"
+      ";; a comment in the body\r\nsplit + fs2 bs3 3\r\nx-vis-color #f0b300 A\r\n",
+      "t.k");
+  EXPECT_EQ(p.version, 2);
+  EXPECT_EQ(p.rails, (std::vector<std::string>{"A", "B", "3"}));
+  ASSERT_EQ(p.operations.size(), 8u);
+  EXPECT_EQ(p.operations[1].op, Opcode::tuck);
+  EXPECT_EQ(p.operations[1].needle, (Needle{Bed::f, -3}));
+  EXPECT_EQ(p.operations[1].carriers.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.operations[2].racking, 0.25);
+  EXPECT_DOUBLE_EQ(p.operations[4].racking, -0.75);
+  EXPECT_TRUE(p.operations[5].carriers.empty());  // knit with no yarn: a drop
+  EXPECT_EQ(p.operations[5].line, 9);
+  EXPECT_EQ(p.operations[6].needle, (Needle{Bed::fs, 2}));
+  EXPECT_EQ(p.operations[6].target, (Needle{Bed::bs, 3}));
+  EXPECT_EQ(p.operations[7].op, Opcode::extension);
+  EXPECT_TRUE(p.warnings.empty());
+}
+
+TEST(KnitoutParse, WarnsForAMissingCarriersHeaderAndUnknownExtensions) {
+  const Program p = parse(";!knitout-3\ninhook 1\nx-frobnicate 3\n", "t.k");
+  ASSERT_EQ(p.warnings.size(), 3u);
+  EXPECT_NE(p.warnings[0].find("t.k:1: warning: knitout version 3 is newer"), std::string::npos);
+  EXPECT_NE(p.warnings[1].find("t.k:3: warning: unknown extension 'x-frobnicate'"), std::string::npos);
+  EXPECT_NE(p.warnings[2].find("no ';;Carriers:' header"), std::string::npos);
+}
+
+TEST(KnitoutParse, RefusesWhatIsNotKnitoutAtItsLine) {
+  EXPECT_EQ(error_of("knit + f1 1\n"), "t.k:1: the first line is not ';!knitout-N'; a knitout program starts with its version line, like ;!knitout-2");
+  EXPECT_EQ(error_of(";!knitout-2\n;;Carriers: 1\ninhook 1\nknot + f1 1\n"),
+            "t.k:4: unknown operation 'knot'; knitout's operations are in, inhook, releasehook, out, outhook, knit, tuck, split, "
+            "miss, drop, amiss, xfer, rack, stitch, pause and x-... extensions");
+  EXPECT_NE(error_of(";!knitout-2\ninhook 1\nknit + g1 1\n").find("t.k:3: 'g1' is not a needle"), std::string::npos);
+  EXPECT_NE(error_of(";!knitout-2\ninhook 1\nknit * f1 1\n").find("t.k:3: '*' is not a direction"), std::string::npos);
+  EXPECT_NE(error_of(";!knitout-2\nrack one\n").find("t.k:2: 'one' is not a number"), std::string::npos);
+  EXPECT_NE(error_of(";!knitout-2\nxfer f1\n").find("t.k:2: 'xfer' takes 2 arguments, not 1"), std::string::npos);
+  EXPECT_NE(error_of(";!knitout-2\nknit + f99999999999 1\n").find("is not a needle"), std::string::npos);
+  EXPECT_NE(error_of(std::string(";!knitout-2\nknit + f1 1\0\n", 25)).find("NUL byte"), std::string::npos);
+}
+
+TEST(KnitoutMachine, RefusesWhatTheMachineCannotDoWithTheProgramsSource) {
+  const std::string head = ";!knitout-2\n;;Carriers: 1 2\n";
+  EXPECT_EQ(error_of(head + "knit + f1 1\n"),
+            "t.k:3: knit with carrier 1, which is not in; bring it in first with 'inhook 1' (or 'in')");
+  EXPECT_EQ(error_of(head + "inhook 1\nknit + f1 1\nrack 1\nxfer f1 b1 ;!source: rib.js:42\n"),
+            "t.k:6: xfer from f1 to b1: the needles are not aligned at racking 1 (;!source: rib.js:42); at racking R front needle n "
+            "faces back needle n - R: rack 0 first");
+  EXPECT_NE(error_of(head + ";!source: lace.js:7\ninhook 1\nknit + f1 1\nxfer f1 f2\n").find("t.k:6: xfer from f1 to f2: both needles are on the same side (;!source: lace.js:7)"),
+            std::string::npos);
+  EXPECT_NE(error_of(";!knitout-2\n;;Carriers: 1\n;;Width: 10\ninhook 1\nknit + f0 1\nknit + f10 1\n")
+                .find("t.k:6: f10 is beyond the machine's bed: the program would span needles 0 to 10, 11 needles, and the swg bed has 10"),
+            std::string::npos);
+  EXPECT_NE(error_of(";!knitout-2\n;;Machine: Kniterate\n;;Carriers: 1\nrack 5\n").find("t.k:4: racking 5 is beyond the kniterate's reach of 4"),
+            std::string::npos);
+  EXPECT_NE(error_of(head + "inhook 1\nknit + fs1 1\n").find("knit on slider fs1"), std::string::npos);
+  EXPECT_NE(error_of(head + "inhook 1\ninhook 1\n").find("t.k:4: carrier 1 is in already"), std::string::npos);
+  EXPECT_NE(error_of(head + "outhook 2\n").find("t.k:3: carrier 2 is not in"), std::string::npos);
+  EXPECT_NE(error_of(head + "inhook 1\nrack 1\n").find("t.k:1: the program makes no loops"), std::string::npos);
+}
+
+TEST(KnitoutMachine, KeepsEachNeedlesPileAndMovesItWhole) {
+  const Program p = parse(";!knitout-2\n;;Carriers: 1\ninhook 1\ntuck + f1 1\ntuck + f2 1\nxfer f1 b1\nrack 1\nxfer b1 f2\n"
+                          "tuck + f2 1\nknit + f2 1\n", "t.k");
+  Machine m(p, profile_for(p));
+  for (std::size_t i = 0; i < p.operations.size(); ++i) m.run(i);
+  ASSERT_EQ(m.loops().size(), 4u);
+  EXPECT_TRUE(m.pile({Bed::f, 1}).empty());
+  EXPECT_EQ(m.pile({Bed::f, 2}), std::vector<int>{3});
+  // The knit went through the pile bottom to top: f2's own tuck, f1's moved onto it, then the new tuck.
+  EXPECT_EQ(m.loops()[3].parents, (std::vector<int>{1, 0, 2}));
+}
+
+TEST(KnitoutImport, AJerseySheetIsItsCastOnAndKnitRows) {
+  const Imported in = import_text(jersey(6, 4, "\r\n"), "jersey.k");
+  const Pattern& p = in.pattern;
+  EXPECT_EQ(p.knitting, Knitting::flat);
+  EXPECT_EQ(p.cast_on, 6);
+  ASSERT_EQ(p.courses.size(), 4u);
+  for (const Course& c : p.courses) EXPECT_EQ(test::names(c), std::vector<std::string>(6, "k"));
+  EXPECT_EQ(p.courses[0].side, Side::right);  // worked leftwards: from the right edge, face view
+  EXPECT_EQ(p.courses[1].side, Side::wrong);
+  EXPECT_EQ(p.courses[2].where.line, 4 + 6 + 2 * 6);  // after the header, the tucks and two rows
+  EXPECT_EQ(in.front_loops, 6 + 24);
+  EXPECT_EQ(in.back_loops, 0);
+  EXPECT_NEAR(p.gauge.loop_width, 25.4 / 15.0, 1e-9);  // the SWG-like profile's 15 gauge
+}
+
+TEST(KnitoutImport, TransfersSayDecreasesByWhichLoopLiesOnTopAndCablesByWhichSettledFirst) {
+  std::string k = jersey(6, 1);
+  k.resize(k.size() - std::string("outhook 3\n").size());
+  // f2 onto f3 (moved loop on top: from the left, a right-leaning k2tog); f5 onto f4 (ssk).
+  k += "xfer f2 b2\nrack 1\nxfer b2 f3\nrack 0\nxfer f5 b5\nrack -1\nxfer b5 f4\nrack 0\n";
+  k += "knit + f1 3\nknit + f3 3\nknit + f4 3\nknit + f6 3\n";
+  const Pattern p = import_text(k, "t.k").pattern;
+  ASSERT_EQ(p.courses.size(), 2u);
+  EXPECT_EQ(test::names(p.courses[1]), (std::vector<std::string>{"k", "k2tog", "ssk", "k"}));
+
+  // A 2/2 cross: f1 f2 to the back, the others moved left first, then f1 f2 to f3 f4.
+  std::string c = jersey(4, 1);
+  c.resize(c.size() - std::string("outhook 3\n").size());
+  c += "xfer f1 b1\nxfer f2 b2\nxfer f3 b3\nxfer f4 b4\nrack -2\nxfer b3 f1\nxfer b4 f2\nrack 2\nxfer b1 f3\nxfer b2 f4\nrack 0\n";
+  c += "knit + f1 3\nknit + f2 3\nknit + f3 3\nknit + f4 3\n";
+  const Pattern q = import_text(c, "t.k").pattern;
+  ASSERT_EQ(q.courses.size(), 2u);
+  ASSERT_EQ(q.courses[1].ops.size(), 1u);
+  const StitchDef& cross = stitch(q.courses[1].ops[0].stitch);
+  EXPECT_EQ(cross.family, StitchFamily::cable);
+  EXPECT_EQ(cross.cable.held, 2);
+  EXPECT_TRUE(cross.cable.front);  // the right pair settled first: on top, moving left (C4F)
+  EXPECT_EQ(cross.name, "C4F");
+}
+
+TEST(KnitoutImport, HandDerivedLoopCountsOfSmallRealPrograms) {
+  KNITC_NEED_SHARED(real("cmu-helloworld.k"));
+  // helloworld: 20 tucks on f1..f20, then 20 rows of 20 knits, all on the front bed.
+  const Imported hello = import_file(real("cmu-helloworld.k"));
+  EXPECT_EQ(hello.front_loops, 20 + 20 * 20);
+  EXPECT_EQ(hello.back_loops, 0);
+  EXPECT_EQ(hello.pattern.cast_on, 20);
+  EXPECT_EQ(hello.pattern.courses.size(), 20u);
+  EXPECT_EQ(tally(hello.pattern)["k"], 400);
+  // rib1x1: front f2..f20 (10), back b1..b19 (10); a tuck on each, then 41 rows of knits
+  // on all 20, bar b1 in the first, which goes rightwards from f2 (b1 was tucked last).
+  const Imported rib = import_file(real("cmu-rib1x1.k"));
+  EXPECT_EQ(rib.front_loops, 10 + 41 * 10);
+  EXPECT_EQ(rib.back_loops, 10 + 41 * 10 - 1);
+  const auto n = tally(rib.pattern);
+  EXPECT_GT(n.at("k"), 300);
+  EXPECT_GT(n.at("p"), 300);
+  // viz-cross-test: carriers A, B and C knit (D is brought in and never used): a yarn each.
+  const Imported cross = import_file(real("viz-cross-test.k"));
+  EXPECT_EQ(cross.pattern.yarns.size(), 3u);
+  // Front: B on f1 f2 f4 f5 and back on f5, then A, C, and A with C plated, 5 each;
+  // back: A, C and the plated pair, 5 each.
+  EXPECT_EQ(cross.front_loops, 5 + 5 + 5 + 5);
+  EXPECT_EQ(cross.back_loops, 5 + 5 + 5);
+}
+
+TEST(KnitoutImport, RealProgramsSayTheirStructures) {
+  KNITC_NEED_SHARED(real("cmu-garter.knitout"));
+  // Garter by transfers: every row is all knit or all purl, turn about.
+  const Pattern garter = import_file(real("cmu-garter.knitout")).pattern;
+  int knit_rows = 0, purl_rows = 0;
+  for (const Course& c : garter.courses) {
+    const auto names = test::names(c);
+    knit_rows += std::all_of(names.begin(), names.end(), [](const std::string& s) { return s == "k"; });
+    purl_rows += std::all_of(names.begin(), names.end(), [](const std::string& s) { return s == "p"; });
+  }
+  EXPECT_GT(knit_rows, 50);
+  EXPECT_GT(purl_rows, 50);
+  // Lace: yarn overs beside decreases of both leans.
+  auto lace = tally(import_file(real("cmu-lace.knitout")).pattern);
+  EXPECT_GT(lace["yo"], 50);
+  EXPECT_GT(lace["k2tog"], 20);
+  EXPECT_GT(lace["ssk"], 20);
+  // A machine-knit braid: crosses.
+  int crosses = 0;
+  for (const Course& c : import_file(real("knitdb-22_1_083Braid.knitout")).pattern.courses)
+    for (const Op& op : c.ops) crosses += stitch(op.stitch).family == StitchFamily::cable;
+  EXPECT_GT(crosses, 10);
+  // A tube knitted on both beds: in the round.
+  EXPECT_EQ(import_file(real("mil-tube.k")).pattern.knitting, Knitting::round);
+  // Plating is said; a bind-off's steps are bo.
+  const Imported plating = import_file(real("mil-plating.k"));
+  EXPECT_TRUE(std::any_of(plating.warnings.begin(), plating.warnings.end(), [](const std::string& w) { return w.find("plated") != std::string::npos; }));
+  EXPECT_GT(tally(plating.pattern)["bo"], 40);
+  // The decreasing triangle narrows from 22 to 2.
+  const Pattern dec = import_file(real("ks-dec_triangle.k")).pattern;
+  EXPECT_EQ(dec.cast_on, 22);
+  EXPECT_EQ(produced(dec.courses.back()), 2);
+}
+
+TEST(KnitoutImport, EveryRealProgramReadsIntoAPatternTheKnitGraphTakes) {
+  KNITC_NEED_SHARED(real("cmu-helloworld.k"));
+  int programs = 0;
+  for (const auto& entry : fs::directory_iterator(real(""))) {
+    SCOPED_TRACE(entry.path().filename().string());
+    const Imported in = import_file(entry.path());
+    EXPECT_GT(in.pattern.courses.size(), 0u);
+    EXPECT_NO_THROW(knit_graph::build(in.pattern));
+    ++programs;
+  }
+  EXPECT_EQ(programs, 27);
+}
