@@ -26,6 +26,7 @@
 #include <fmt/core.h>
 
 #include "bench.hpp"
+#include "knitout.hpp"
 #include "printed.hpp"
 #include "sources.hpp"
 #include "stats.hpp"
@@ -223,6 +224,29 @@ int chart(const Args& args) {
   return write({knitc::writers::text_file("-", knitc::language::chart_text(std::get<knitc::Pattern>(loaded)))});
 }
 
+// knitc knitout: the pattern as a machine program, checked by reading it back.
+int knitout_out(const Args& args, const std::string& machine) {
+  auto loaded = load(args);
+  if (const int* code = std::get_if<int>(&loaded)) return *code;
+  const auto& pattern = std::get<knitc::Pattern>(loaded);
+  const knitc::knitout::Profile profile = knitc::knitout::profile_named(machine);
+  knitc::knitout::Exported exported;
+  try {
+    exported = knitc::knitout::export_pattern(pattern, profile);
+  } catch (const knitc::knitout::KnitoutError& e) {
+    report(e.what());
+    return exit_pattern;
+  }
+  for (const auto& w : exported.warnings) report(w);
+  if (const auto problems = knitc::knitout::check_program(exported.text, args.output, profile); !problems.empty()) {
+    for (const auto& p : problems) report("knitc: the program written fails its own check: " + p);
+    return exit_internal;
+  }
+  if (const int code = write({knitc::writers::text_file(args.output, exported.text)}); code != 0) return code;
+  if (!args.quiet && args.output != "-") report("knitc: wrote " + args.output + " for the " + profile.name);
+  return 0;
+}
+
 int check(const Args& args) {
   auto loaded = load(args);
   if (const int* code = std::get_if<int>(&loaded)) return *code;
@@ -376,14 +400,15 @@ namespace {
 // Every subcommand and the arguments it fills.
 struct Commands {
   CLI::App app{"knitc: compiles knitting pattern scripts into yarn-level 3D fabric", "knitc"};
-  Args build, render, snapshot, chart, check, bench, view, gallery;
+  Args build, render, snapshot, chart, check, bench, view, gallery, knitout;
+  std::string knitout_machine = "swg";
   int view_port = 0;
   bool view_no_open = false;
   std::string bench_size = "150x250";
   bool bench_header = false, bench_flat = false;
   CLI::App *build_cmd = nullptr, *render_cmd = nullptr, *snapshot_cmd = nullptr, *chart_cmd = nullptr,
            *check_cmd = nullptr, *bench_cmd = nullptr, *reference_cmd = nullptr, *view_cmd = nullptr,
-           *gallery_cmd = nullptr;
+           *gallery_cmd = nullptr, *knitout_cmd = nullptr;
 };
 
 void declare_commands(Commands& c) {
@@ -426,6 +451,12 @@ void declare_commands(Commands& c) {
   c.check_cmd = app.add_subcommand("check", "validate a pattern only (fast; for editors and hooks)");
   add_pattern_options(c.check_cmd, c.check);
 
+  c.knitout_cmd = app.add_subcommand("knitout", "write the pattern as a knitout program for a V-bed knitting machine (.k; docs/knitout.md)");
+  add_pattern_options(c.knitout_cmd, c.knitout);
+  c.knitout_cmd->add_option("-o,--output", c.knitout.output, "the .k to write (- for standard output)")->required();
+  c.knitout_cmd->add_option("--machine", c.knitout_machine, "the machine profile: swg (a Shima SWG-like, 15 gauge; default) or kniterate (7 gauge)")
+      ->check(CLI::IsMember({"swg", "kniterate"}));
+
   c.bench_cmd = app.add_subcommand("bench", "time the whole job on a jersey swatch of WxH loops (one table row)");
   c.bench_cmd->add_option("--swatch", c.bench_size, "wales x courses, e.g. 150x250 (default)");
   c.bench_cmd->add_flag("--header", c.bench_header, "print the table's header first");
@@ -457,7 +488,7 @@ void declare_commands(Commands& c) {
 // exit code, or 0. Paths are compared as the files they name (DIR/../X.glb is X.glb, a
 // link is its target).
 int refuse_bad_outputs(const Commands& c) {
-  for (const Args* args : {&c.build, &c.render, &c.snapshot}) {
+  for (const Args* args : {&c.build, &c.render, &c.snapshot, &c.knitout}) {
     if (args->pattern.empty()) continue;
     const std::string pattern_file = knitc::writers::file_identity(args->pattern);
     std::vector<std::pair<std::string, std::string>> seen;  // identity, path
@@ -492,7 +523,7 @@ int refuse_bad_outputs(const Commands& c) {
 void settle_defaults(Commands& c) {
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
                            std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.chart_cmd, &c.chart},
-                           std::pair{c.check_cmd, &c.check}, std::pair{c.view_cmd, &c.view}}) {
+                           std::pair{c.check_cmd, &c.check}, std::pair{c.view_cmd, &c.view}, std::pair{c.knitout_cmd, &c.knitout}}) {
     if (!cmd->parsed() || cmd->get_option("--max-seconds")->count() != 0) continue;
     const knitc::runtime::Limits defaults;
     args->run.limits.seconds = defaults.seconds * std::max(1.0, static_cast<double>(args->run.limits.instructions) /
@@ -553,6 +584,7 @@ int dispatch(Commands& c) {
   if (c.bench_cmd->parsed()) return run_bench(c);
   if (c.chart_cmd->parsed()) return chart(c.chart);
   if (c.check_cmd->parsed()) return check(c.check);
+  if (c.knitout_cmd->parsed()) return knitout_out(c.knitout, c.knitout_machine);
   if (c.reference_cmd->parsed()) return write({knitc::writers::text_file("-", knitc::runtime::language_reference())});
   if (c.view_cmd->parsed()) {
     knitc::cli::ViewOptions v;
@@ -600,7 +632,7 @@ int run(int argc, char** argv) {
   if (const int code = refuse_bad_outputs(c); code != 0) return code;
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
                            std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.chart_cmd, &c.chart},
-                           std::pair{c.check_cmd, &c.check}, std::pair{c.view_cmd, &c.view}}) {
+                           std::pair{c.check_cmd, &c.check}, std::pair{c.view_cmd, &c.view}, std::pair{c.knitout_cmd, &c.knitout}}) {
     if (!cmd->parsed()) continue;
     if (const auto problem = knitc::cli::settle_printed_options(cmd, args->pattern, args->printed)) {
       report(*problem);

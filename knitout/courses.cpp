@@ -88,6 +88,7 @@ Imported import_program(const Program& program, const Profile& profile) {
   };
   std::size_t plated = 0, splits = 0;
   int plated_line = 0, last_drop_line = 0;
+  std::vector<Crossing> waiting;  // misses before the next course opens
   for (std::size_t i = 0; i < program.operations.size(); ++i) {
     const Operation& op = program.operations[i];
     const bool stitch = (op.op == Opcode::knit || op.op == Opcode::tuck || op.op == Opcode::split) && !op.carriers.empty();
@@ -96,6 +97,34 @@ Imported import_program(const Program& program, const Profile& profile) {
     if (open && (stitch || moves) &&
         (has_open_loop(op.needle) || ((op.op == Opcode::split || op.op == Opcode::xfer) && has_open_loop(op.target))))
       close();
+    // A carrier turning back along the bed it came (a flat row's turn), or passing over a
+    // stitch it has already passed in this course, onto a needle holding loops, starts
+    // the next course; a tube's turn onto the other bed, or a cast-on's onto empty
+    // needles, does not.
+    auto turns = [&](const std::vector<Crossing>& went) {
+      for (int carrier : op.carriers)
+        for (auto e = went.rbegin(); e != went.rend(); ++e)
+          if (e->carrier == carrier) {
+            if (e->direction != op.direction && e->front == front(op.needle.bed)) return true;
+            break;
+          }
+      return false;
+    };
+    if (open && stitch && !machine.pile(op.needle).empty()) {
+      const auto& went = courses.back().went;
+      const double x = across(op.needle, courses.back().racking);
+      const bool side = front(op.needle.bed);
+      bool passed = turns(went);
+      for (std::size_t a = 0; a + 1 < went.size() && !passed; ++a)
+        for (std::size_t b = a + 1; b < went.size(); ++b) {
+          if (went[b].carrier != went[a].carrier) continue;
+          passed = std::find(op.carriers.begin(), op.carriers.end(), went[a].carrier) != op.carriers.end() &&
+                   went[a].direction == went[b].direction && (went[a].front == side || went[b].front == side) &&
+                   std::min(went[a].x, went[b].x) < x - 1e-6 && std::max(went[a].x, went[b].x) > x + 1e-6;
+          break;
+        }
+      if (passed) close();
+    }
     const std::size_t before = machine.loops().size();
     if (moves && !open) last_drop_line = op.line;
     machine.run(i);
@@ -114,9 +143,19 @@ Imported import_program(const Program& program, const Profile& profile) {
       if (op.op == Opcode::split) ++splits;
       (front(op.needle.bed) ? out.front_loops : out.back_loops) += 1;
     }
-    if (open && (stitch || op.op == Opcode::miss))
+    // Where the carriers went. A miss that turns back waits for the next stitch: it
+    // belongs to that stitch's course, whichever that is.
+    if (op.op == Opcode::miss) {
+      const bool waits = !open || turns(courses.back().went);
       for (int carrier : op.carriers)
-        courses.back().went.push_back({carrier, across(op.needle, courses.back().racking), op.direction, front(op.needle.bed)});
+        (waits ? waiting : courses.back().went)
+            .push_back({carrier, across(op.needle, open ? courses.back().racking : machine.racking()), op.direction, front(op.needle.bed)});
+    } else if (stitch && open) {
+      auto& went = courses.back().went;
+      went.insert(went.end(), waiting.begin(), waiting.end());
+      waiting.clear();
+      for (int carrier : op.carriers) went.push_back({carrier, across(op.needle, courses.back().racking), op.direction, front(op.needle.bed)});
+    }
   }
   close();
   if (courses.empty())
@@ -534,6 +573,21 @@ Imported import_program(const Program& program, const Profile& profile) {
       }
     live = pos.size();
     pattern.courses.push_back(std::move(course));
+  }
+  // A last course that binds off every stitch but the one the chain ends on is the
+  // pattern's bind-off: the knitter pulls the yarn through that last loop.
+  if (!pattern.courses.empty()) {
+    const Course& last = pattern.courses.back();
+    int bound = 0, kept = 0;
+    for (const Op& op : last.ops) (op.stitch == bo ? bound : kept) += 1;
+    const bool chain_end = kept == 1 && bound >= 1 &&
+                           std::any_of(last.ops.begin(), last.ops.end(), [&](const Op& op) {
+                             return op.stitch == stitch_id("k") || op.stitch == stitch_id("p");
+                           });
+    if (chain_end && pattern.courses.size() > 1) {
+      pattern.courses.pop_back();
+      pattern.bound_off = true;
+    }
   }
   // A drop the knit graph cannot unravel (through a decrease or a held tuck below it):
   // drawn bound off at that row, and said.

@@ -8,15 +8,6 @@ namespace knitc::knit_graph {
 
 namespace {
 
-// The new loops a cable makes take their parents from the block crossed: new position j
-// of a block of n with h held stitches comes from old position (j < h ? n - h + j : j - h);
-// in a three-part cross the outer h on each side change places around the middle.
-int cable_source(const StitchDef& s, int j) {
-  const int n = s.consumes, h = s.cable.held;
-  if (s.cable.middle > 0) return j < h ? n - h + j : j >= n - h ? j - (n - h) : j;
-  return j < h ? n - h + j : j - h;
-}
-
 // A drop: the live loop is let off and its wale unravels, each loop down the wale losing
 // the one pulled through it, to the yarn over (or cast-on or make-one) it grew from,
 // which comes undone too. Every loop of the run becomes a rung. A wale unravels as one

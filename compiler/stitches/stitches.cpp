@@ -231,6 +231,12 @@ const std::vector<StitchDef>& all_stitches() {
 
 }  // namespace
 
+int cable_source(const StitchDef& s, int j) {
+  const int n = s.consumes, h = s.cable.held;
+  if (s.cable.middle > 0) return j < h ? n - h + j : j >= n - h ? j - (n - h) : j;
+  return j < h ? n - h + j : j - h;
+}
+
 std::span<const StitchDef> stitch_table() { return all_stitches(); }
 
 const StitchDef& stitch(StitchId id) {

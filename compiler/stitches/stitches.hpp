@@ -83,6 +83,10 @@ StitchId stitch_id(std::string_view canonical_name);                    // asser
 // Whether the stitch's new loops are purled (pulled through from the front: a bump on
 // the face): purls, p-decreases and p-increases, ssp, m1p.
 bool purled(const StitchDef& s);
+// The stitch of its block a cable's new loop j (left to right, face view) is pulled
+// through: for n stitches with h held, new j comes from old (j < h ? n - h + j : j - h);
+// in a three-part cross the outer h on each side change places around the middle.
+int cable_source(const StitchDef& s, int j);
 // The face-view stitch for `id` worked on a wrong-side row, if it has one.
 std::optional<StitchId> wrong_side_face(StitchId id);
 // A cross as the Stitch Maps notation counts it: `over` stitches on top cross `under`
