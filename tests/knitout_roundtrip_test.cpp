@@ -110,3 +110,41 @@ TEST(KnitoutRoundTrip, AStitchOrARackingTheProfileCannotDoIsAnErrorAtItsLine) {
   // Wider than the bed.
   EXPECT_NE(error(pattern("cast_on(300)\nrow \"k\"\n"), "kniterate").find("the kniterate bed has 252"), std::string::npos);
 }
+
+TEST(KnitoutCli, ReadsAProgramByNameOrFirstLineAndWritesOneFromAPattern) {
+  const auto dir = test::scratch_dir("knitout-cli");
+  // A machine program without the usual extension is known by its first line.
+  test::write_text(dir / "sheet.txt", ";!knitout-2\n;;Carriers: 1\ninhook 1\ntuck - f2 1\ntuck + f1 1\nknit - f2 1\nknit - f1 1\nreleasehook 1\nouthook 1\n");
+  const auto check = test::run_knitc("check '" + (dir / "sheet.txt").string() + "'");
+  EXPECT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_NE(check.err.find("1 rows, 2 stitches cast on"), std::string::npos) << check.err;
+  // Export, then build what was written.
+  const std::string out = (dir / "jersey.k").string();
+  const auto exported = test::run_knitc("knitout patterns/jersey.lua -o '" + out + "' --machine kniterate");
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  const std::string program = test::read_text(out);
+  EXPECT_EQ(program.rfind(";!knitout-2\n;;Machine: Kniterate\n;;Gauge: 7\n", 0), 0u);
+  const auto built = test::run_knitc("build '" + out + "' -q --relax off -o '" + (test::glb_dir() / "knitout-export-jersey.glb").string() + "'");
+  EXPECT_EQ(built.exit_code, 0) << built.err;
+  fs::remove_all(dir);
+}
+
+TEST(KnitoutCli, BadProgramsExitOneAtTheirLineAndMisuseExitsTwo) {
+  const auto dir = test::scratch_dir("knitout-bad");
+  test::write_text(dir / "bad.k", ";!knitout-2\n;;Carriers: 1\ninhook 1\nknit + f1 1\nrack 1\nxfer f1 b1\n");
+  const auto bad = test::run_knitc("build '" + (dir / "bad.k").string() + "' -o '" + (dir / "bad.glb").string() + "'");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("bad.k:6: xfer from f1 to b1: the needles are not aligned at racking 1"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir / "bad.glb"));
+  test::write_text(dir / "noise.k", std::string("\x7f" "ELF\x01\x02", 6));
+  const auto noise = test::run_knitc("check '" + (dir / "noise.k").string() + "'");
+  EXPECT_EQ(noise.exit_code, 1);
+  EXPECT_NE(noise.err.find("noise.k:1: the first line is not ';!knitout-N'"), std::string::npos) << noise.err;
+  EXPECT_EQ(test::run_knitc("knitout patterns/jersey.lua").exit_code, 2);
+  EXPECT_EQ(test::run_knitc("knitout patterns/jersey.lua -o x.k --machine loom").exit_code, 2);
+  const auto refused = test::run_knitc("knitout patterns/brioche.lua -o '" + (dir / "b.k").string() + "'");
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("patterns/brioche.lua:"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir / "b.k"));
+  fs::remove_all(dir);
+}
