@@ -33,18 +33,48 @@ struct Position {
   std::vector<int> pile;   // loops, bottom to top
 };
 
-struct Crossing {  // a carrier at a needle, in the order it went
+struct Crossing {  // a carrier at a needle
   int carrier;
   double x;
   int direction;
   bool front;
 };
 
+// Where a carrier went in one direction without turning: the span it passed, and the
+// beds it stitched or missed on. A course keeps these, not every stitch, so a program of
+// a million misses costs a million steps.
+struct Run {
+  int carrier;
+  int direction;
+  double low, high;
+  bool front = false, back = false;
+  bool on(bool side) const { return side ? front : back; }
+  bool passes(double x) const { return low < x - 1e-6 && high > x + 1e-6; }
+};
+
+// Adds where a carrier went to a course's runs: the carrier's last run grows, or a new
+// one starts where it turned.
+void add(std::vector<Run>& runs, const Crossing& c) {
+  for (auto r = runs.rbegin(); r != runs.rend(); ++r) {
+    if (r->carrier != c.carrier) continue;
+    if (r->direction == c.direction) {
+      r->low = std::min(r->low, c.x);
+      r->high = std::max(r->high, c.x);
+      (c.front ? r->front : r->back) = true;
+      return;
+    }
+    break;
+  }
+  Run r{c.carrier, c.direction, c.x, c.x};
+  (c.front ? r.front : r.back) = true;
+  runs.push_back(r);
+}
+
 struct RawCourse {
   int first_operation = 0;
   double racking = 0.0;
   std::vector<int> made;             // loops made, in order
-  std::vector<Crossing> went;        // stitches and misses, in order
+  std::vector<Run> went;             // where its carriers went
   std::vector<Position> positions;   // at its end, unordered
 };
 
@@ -88,7 +118,7 @@ Imported import_program(const Program& program, const Profile& profile) {
   };
   std::size_t plated = 0, splits = 0;
   int plated_line = 0, last_drop_line = 0;
-  std::vector<Crossing> waiting;  // misses before the next course opens
+  std::vector<Run> waiting;  // misses before the next course opens
   for (std::size_t i = 0; i < program.operations.size(); ++i) {
     const Operation& op = program.operations[i];
     const bool stitch = (op.op == Opcode::knit || op.op == Opcode::tuck || op.op == Opcode::split) && !op.carriers.empty();
@@ -101,11 +131,11 @@ Imported import_program(const Program& program, const Profile& profile) {
     // stitch it has already passed in this course, onto a needle holding loops, starts
     // the next course; a tube's turn onto the other bed, or a cast-on's onto empty
     // needles, does not.
-    auto turns = [&](const std::vector<Crossing>& went) {
+    auto turns = [&](const std::vector<Run>& went) {
       for (int carrier : op.carriers)
         for (auto e = went.rbegin(); e != went.rend(); ++e)
           if (e->carrier == carrier) {
-            if (e->direction != op.direction && e->front == front(op.needle.bed)) return true;
+            if (e->direction != op.direction && e->on(front(op.needle.bed))) return true;
             break;
           }
       return false;
@@ -115,14 +145,8 @@ Imported import_program(const Program& program, const Profile& profile) {
       const double x = across(op.needle, courses.back().racking);
       const bool side = front(op.needle.bed);
       bool passed = turns(went);
-      for (std::size_t a = 0; a + 1 < went.size() && !passed; ++a)
-        for (std::size_t b = a + 1; b < went.size(); ++b) {
-          if (went[b].carrier != went[a].carrier) continue;
-          passed = std::find(op.carriers.begin(), op.carriers.end(), went[a].carrier) != op.carriers.end() &&
-                   went[a].direction == went[b].direction && (went[a].front == side || went[b].front == side) &&
-                   std::min(went[a].x, went[b].x) < x - 1e-6 && std::max(went[a].x, went[b].x) > x + 1e-6;
-          break;
-        }
+      for (const Run& r : went)
+        passed = passed || (std::find(op.carriers.begin(), op.carriers.end(), r.carrier) != op.carriers.end() && r.on(side) && r.passes(x));
       if (passed) close();
     }
     const std::size_t before = machine.loops().size();
@@ -147,14 +171,20 @@ Imported import_program(const Program& program, const Profile& profile) {
     // belongs to that stitch's course, whichever that is.
     if (op.op == Opcode::miss) {
       const bool waits = !open || turns(courses.back().went);
-      for (int carrier : op.carriers)
-        (waits ? waiting : courses.back().went)
-            .push_back({carrier, across(op.needle, open ? courses.back().racking : machine.racking()), op.direction, front(op.needle.bed)});
+      for (int carrier : op.carriers) {
+        const Crossing c{carrier, across(op.needle, open ? courses.back().racking : machine.racking()), op.direction, front(op.needle.bed)};
+        if (waits) add(waiting, c);
+        else add(courses.back().went, c);
+      }
     } else if (stitch && open) {
       auto& went = courses.back().went;
-      went.insert(went.end(), waiting.begin(), waiting.end());
+      for (const Run& r : waiting) {
+        add(went, {r.carrier, r.low, r.direction, r.front});
+        add(went, {r.carrier, r.high, r.direction, r.front});
+        if (r.back) add(went, {r.carrier, r.high, r.direction, false});
+      }
       waiting.clear();
-      for (int carrier : op.carriers) went.push_back({carrier, across(op.needle, courses.back().racking), op.direction, front(op.needle.bed)});
+      for (int carrier : op.carriers) add(went, {carrier, across(op.needle, courses.back().racking), op.direction, front(op.needle.bed)});
     }
   }
   close();
@@ -395,15 +425,10 @@ Imported import_program(const Program& program, const Profile& profile) {
       for (int l : q.pile) placed[static_cast<std::size_t>(l)] = 0;
     // Whether a yarn of the course passed x without a stitch there.
     auto crossed = [&](double x, int& carrier) {
-      for (std::size_t a = 0; a < raw.went.size(); ++a)
-        for (std::size_t b = a + 1; b < raw.went.size(); ++b) {
-          if (raw.went[b].carrier != raw.went[a].carrier) continue;
-          if (raw.went[a].direction == raw.went[b].direction &&
-              std::min(raw.went[a].x, raw.went[b].x) < x - 1e-6 && std::max(raw.went[a].x, raw.went[b].x) > x + 1e-6) {
-            carrier = raw.went[a].carrier;
-            return true;
-          }
-          break;
+      for (const Run& r : raw.went)
+        if (r.passes(x)) {
+          carrier = r.carrier;
+          return true;
         }
       return false;
     };

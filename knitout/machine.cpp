@@ -25,9 +25,9 @@ const std::vector<int> no_loops;
 
 Profile profile_named(const std::string& name) {
   // A Shima SWG091N2: 15 gauge, 36 inches of bed, racking up to 8 pitches, 10 carriers.
-  if (name == "swg") return {"swg", 540, 15.0, 8.0, 10};
-  // A Kniterate: 7 gauge, 252 needles a bed, racking up to 4 pitches, 6 carriers.
-  if (name == "kniterate") return {"kniterate", 252, 7.0, 4.0, 6};
+  if (name == "swg") return {"swg", 540, 15.0, 8.0, 10, true};
+  // A Kniterate: 7 gauge, 252 needles a bed, racking up to 4 pitches, 6 carriers, no sliders.
+  if (name == "kniterate") return {"kniterate", 252, 7.0, 4.0, 6, false};
   throw std::invalid_argument("unknown machine profile '" + name + "'; knitc knows swg (a Shima SWG-like V-bed) and kniterate");
 }
 

@@ -19,6 +19,7 @@ struct Profile {
   double gauge = 15.0;     // needles per inch
   double max_racking = 8;  // needle pitches either way
   int carriers = 10;
+  bool sliders = true;     // slider needles (fs, bs) to hold loops in transfers
 };
 Profile profile_named(const std::string& name);  // throws std::invalid_argument for an unknown one
 // The profile a program's header names (";;Machine:", ";;Gauge:", ";;Width:"), else the SWG-like one.

@@ -320,9 +320,36 @@ Exported export_pattern(const Pattern& pattern, const Profile& profile) {
   }
   if (pattern.bound_off) {
     w.put(";!source: " + w.where.file + ":" + std::to_string(w.where.line) + " (bind off)");
-    if (round) {
-      result.warnings.push_back(w.where.file + ":" + std::to_string(w.where.line) +
-                                ": warning: the bind-off is not written for work in the round; the loops are left on the needles");
+    if (round && !profile.sliders) {
+      result.warnings.push_back(w.where.file + ":" + std::to_string(w.where.line) + ": warning: the " + profile.name +
+                                " has no sliders to bind off a tube with; the loops are left on the needles");
+    } else if (round && !w.live.empty()) {
+      // A chain round the tube, as the rounds go: the back bed rightwards, the front
+      // leftwards; each loop parked on the slider facing it, racked one needle on, and
+      // put down on the next stitch, which is knitted through both.
+      const int yarn = pattern.courses.empty() ? pattern.cast_on_yarn : pattern.courses.back().ops.back().yarn;
+      w.bring_in(yarn);
+      const std::string c = w.carrier(yarn);
+      const int n = static_cast<int>(w.live.size());
+      for (int k = 0; k < n; ++k) {
+        const Place p = w.live[static_cast<std::size_t>(n - 1 - k)];
+        if (k > 0) {
+          const Place q = w.live[static_cast<std::size_t>(n - k)];
+          if (q.back != p.back) {  // round the edge, from the back bed onto the front
+            w.set_rack(p.needle - q.needle, "the bind-off");
+            w.put("xfer " + needle_name(q) + " " + needle_name(p));
+          } else {
+            w.set_rack(0.0, "the bind-off");
+            const std::string slider = std::string(q.back ? "fs" : "bs") + std::to_string(q.needle);
+            w.put("xfer " + needle_name(q) + " " + slider);
+            w.set_rack(q.back ? q.needle - p.needle : p.needle - q.needle, "the bind-off");
+            w.put("xfer " + slider + " " + needle_name(p));
+          }
+          w.set_rack(0.0, "the bind-off");
+        }
+        w.put(std::string("knit ") + (p.back ? "+ " : "- ") + needle_name(p) + " " + c);
+      }
+      w.release(yarn);
     } else if (!w.live.empty()) {
       // A chain: the first stitch knitted, then each loop moved onto the next stitch and
       // knitted through both, the way the next row would go.
