@@ -624,13 +624,18 @@ Imported import_program(const Program& program, const Profile& profile) {
       const std::size_t row = static_cast<std::size_t>(e.course - 1);
       if (row >= pattern.courses.size()) throw;
       Course& c = pattern.courses[row];
+      // Each try builds the graph again: past a few rows of them, every later drop is
+      // drawn bound off at once, so a program of many such drops stays linear.
+      const std::size_t last = tries < 8 ? row + 1 : pattern.courses.size();
       int changed = 0;
-      for (Op& op : c.ops)
-        if (op.stitch == drop) op.stitch = bo, ++changed;
-      if (changed == 0 || tries > 200)
+      for (std::size_t r = row; r < last; ++r)
+        for (Op& op : pattern.courses[r].ops)
+          if (op.stitch == drop) op.stitch = bo, ++changed;
+      if (changed == 0 || tries > 8)
         throw KnitoutError(program.file + ":" + std::to_string(c.where.line) + ": " + e.what(), c.where.line);
       out.warnings.push_back(program.file + ":" + std::to_string(c.where.line) + ": warning: " + std::to_string(changed) +
-                             " loops dropped here cannot run down their wales (" + e.what() + "); drawn bound off at this row");
+                             " loops dropped " + (last == row + 1 ? "here" : "here and after") + " cannot run down their wales (" + e.what() +
+                             "); drawn bound off");
     }
   }
   if (approximated > 5)

@@ -170,7 +170,7 @@ const BadScript catalogue[] = {
      "t.lua:4: row 2 \"1/1/1 RPC, k5\" is a wrong-side row: 1/1/1 RPC worked from the wrong side shows purled outer stitches crossing around a knit middle on the face, which knitc cannot draw yet; work it on a right-side row"},
     {"chart_unknown_symbol",
      "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(4)\nchart [[\n  | | . .\n  | | Q .\n]]\n",
-     "t.lua:5: unknown chart symbol 'Q'; did you mean . (p)? The legend has . / D O U V \\ ^ k p v x | and stitch names such as C4F"},
+     "t.lua:5: unknown chart symbol 'Q'; did you mean . (p)? The legend has . / D H O U V \\ ^ k p v x | and stitch names such as C4F"},
     {"chart_width",
      "pattern { name = \"t\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.2, color = \"#aabbcc\" }, B = { weight = \"dk\" } } }\ncast_on(10)\nchart [[\n  | | . .\n]]\n",
      "t.lua:4: chart row 1 (row 1) is 4 stitches wide and does not repeat evenly across 10 live stitches (2 left over); make the live count a multiple of 4"},
