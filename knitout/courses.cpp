@@ -16,69 +16,14 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
-#include <cstdio>
-#include <cstdlib>
 
+#include "cut.hpp"
 #include "knit_graph/knit_graph.hpp"
 #include "knitout.hpp"
 
 namespace knitc::knitout {
 
 namespace {
-
-struct Position {
-  Needle needle;
-  double x = 0.0;          // across the beds, in needle pitches
-  std::vector<int> pile;   // loops, bottom to top
-};
-
-struct Crossing {  // a carrier at a needle
-  int carrier;
-  double x;
-  int direction;
-  bool front;
-};
-
-// Where a carrier went in one direction without turning: the span it passed, and the
-// beds it stitched or missed on. A course keeps these, not every stitch, so a program of
-// a million misses costs a million steps.
-struct Run {
-  int carrier;
-  int direction;
-  double low, high;
-  bool front = false, back = false;
-  bool on(bool side) const { return side ? front : back; }
-  bool passes(double x) const { return low < x - 1e-6 && high > x + 1e-6; }
-};
-
-// Adds where a carrier went to a course's runs: the carrier's last run grows, or a new
-// one starts where it turned.
-void add(std::vector<Run>& runs, const Crossing& c) {
-  for (auto r = runs.rbegin(); r != runs.rend(); ++r) {
-    if (r->carrier != c.carrier) continue;
-    if (r->direction == c.direction) {
-      r->low = std::min(r->low, c.x);
-      r->high = std::max(r->high, c.x);
-      (c.front ? r->front : r->back) = true;
-      return;
-    }
-    break;
-  }
-  Run r{c.carrier, c.direction, c.x, c.x};
-  (c.front ? r.front : r.back) = true;
-  runs.push_back(r);
-}
-
-struct RawCourse {
-  int first_operation = 0;
-  double racking = 0.0;
-  std::vector<int> made;             // loops made, in order
-  std::vector<Run> went;             // where its carriers went
-  std::vector<Position> positions;   // at its end, unordered
-};
-
-double across(Needle n, double racking) { return front(n.bed) ? n.index : n.index + racking + 1e-3; }
 
 const StitchId none = static_cast<StitchId>(-1);
 const StitchId drop = stitch_id("drop"), bo = stitch_id("bo");
@@ -98,162 +43,16 @@ StitchId cable_stitch(int width, int held, bool held_on_top) {
 Imported import_program(const Program& program, const Profile& profile) {
   Imported out;
   out.profile = profile;
-  out.warnings = program.warnings;
   Machine machine(program, profile);
-
-  // Run the machine, cutting courses.
-  std::vector<RawCourse> courses;
-  std::vector<int> course_of;  // per loop
-  bool open = false;
-  auto has_open_loop = [&](Needle n) {
-    for (int l : machine.pile(n))
-      if (course_of[static_cast<std::size_t>(l)] == static_cast<int>(courses.size()) - 1 && open) return true;
-    return false;
-  };
-  auto close = [&] {
-    if (!open) return;
-    RawCourse& c = courses.back();
-    for (Needle n : machine.occupied()) c.positions.push_back({n, across(n, c.racking), machine.pile(n)});
-    open = false;
-  };
-  std::size_t plated = 0, splits = 0;
-  int plated_line = 0, last_drop_line = 0;
-  std::vector<Run> waiting;  // misses before the next course opens
-  for (std::size_t i = 0; i < program.operations.size(); ++i) {
-    const Operation& op = program.operations[i];
-    const bool stitch = (op.op == Opcode::knit || op.op == Opcode::tuck || op.op == Opcode::split) && !op.carriers.empty();
-    const bool moves = op.op == Opcode::xfer || op.op == Opcode::drop ||
-                       ((op.op == Opcode::knit || op.op == Opcode::split) && op.carriers.empty());
-    if (open && (stitch || moves) &&
-        (has_open_loop(op.needle) || ((op.op == Opcode::split || op.op == Opcode::xfer) && has_open_loop(op.target))))
-      close();
-    // A carrier turning back along the bed it came (a flat row's turn), or passing over a
-    // stitch it has already passed in this course, onto a needle holding loops, starts
-    // the next course; a tube's turn onto the other bed, or a cast-on's onto empty
-    // needles, does not.
-    auto turns = [&](const std::vector<Run>& went) {
-      for (int carrier : op.carriers)
-        for (auto e = went.rbegin(); e != went.rend(); ++e)
-          if (e->carrier == carrier) {
-            if (e->direction != op.direction && e->on(front(op.needle.bed))) return true;
-            break;
-          }
-      return false;
-    };
-    if (open && stitch && !machine.pile(op.needle).empty()) {
-      const auto& went = courses.back().went;
-      const double x = across(op.needle, courses.back().racking);
-      const bool side = front(op.needle.bed);
-      bool passed = turns(went);
-      for (const Run& r : went)
-        passed = passed || (std::find(op.carriers.begin(), op.carriers.end(), r.carrier) != op.carriers.end() && r.on(side) && r.passes(x));
-      if (passed) close();
-    }
-    const std::size_t before = machine.loops().size();
-    if (moves && !open) last_drop_line = op.line;
-    machine.run(i);
-    course_of.resize(machine.loops().size(), -1);
-    if (machine.loops().size() > before) {
-      if (!open) {
-        courses.push_back({});
-        courses.back().first_operation = static_cast<int>(i);
-        courses.back().racking = machine.racking();
-        open = true;
-      }
-      RawCourse& c = courses.back();
-      course_of[before] = static_cast<int>(courses.size()) - 1;
-      c.made.push_back(static_cast<int>(before));
-      if (op.carriers.size() > 1 && plated++ == 0) plated_line = op.line;
-      if (op.op == Opcode::split) ++splits;
-      (front(op.needle.bed) ? out.front_loops : out.back_loops) += 1;
-    }
-    // Where the carriers went. A miss that turns back waits for the next stitch: it
-    // belongs to that stitch's course, whichever that is.
-    if (op.op == Opcode::miss) {
-      const bool waits = !open || turns(courses.back().went);
-      for (int carrier : op.carriers) {
-        const Crossing c{carrier, across(op.needle, open ? courses.back().racking : machine.racking()), op.direction, front(op.needle.bed)};
-        if (waits) add(waiting, c);
-        else add(courses.back().went, c);
-      }
-    } else if (stitch && open) {
-      auto& went = courses.back().went;
-      for (const Run& r : waiting) {
-        add(went, {r.carrier, r.low, r.direction, r.front});
-        add(went, {r.carrier, r.high, r.direction, r.front});
-        if (r.back) add(went, {r.carrier, r.high, r.direction, false});
-      }
-      waiting.clear();
-      for (int carrier : op.carriers) add(went, {carrier, across(op.needle, courses.back().racking), op.direction, front(op.needle.bed)});
-    }
-  }
-  close();
-  if (courses.empty())
-    throw KnitoutError(program.file + ":1: the program makes no loops; a knitout program knits, tucks or splits with a carrier", 1);
-  if (plated > 0)
-    out.warnings.push_back(program.file + ":" + std::to_string(plated_line) + ": warning: " + std::to_string(plated) +
-                           " loops are plated (made with several carriers); each is drawn in its first carrier's yarn");
-
-  // A bind-off's steps, each a course of a loop or two knitted through the last step's
-  // loop moved onto an older stitch, are one course: every loop of the chain but the last
-  // is bound off (bo), as a pattern's bind-off row says it.
-  {
-    std::vector<RawCourse> runs;
-    std::vector<int> run_of(courses.size(), 0);
-    bool small_run = false, chain_run = false;
-    for (std::size_t c = 0; c < courses.size(); ++c) {
-      RawCourse& raw = courses[c];
-      bool step = false;
-      if (!runs.empty() && small_run && raw.made.size() <= 2) {
-        const int last = static_cast<int>(runs.size()) - 1;
-        for (int l : raw.made) {
-          bool chained = false, older = false;
-          for (int q : machine.loops()[static_cast<std::size_t>(l)].parents) {
-            const int at = course_of[static_cast<std::size_t>(q)];
-            chained = chained || at == last;
-            older = older || (at >= 0 && at < last);
-          }
-          // Through the chain's last loop and an older stitch; or, once a chain, its
-          // loop knitted again on its needle (a bind-off that knits each step twice or more).
-          step = step || (chained && (older || chain_run));
-        }
-      }
-      if (step) {
-        RawCourse& run = runs.back();
-        run.made.insert(run.made.end(), raw.made.begin(), raw.made.end());
-        run.went.insert(run.went.end(), raw.went.begin(), raw.went.end());
-        run.positions = std::move(raw.positions);
-        chain_run = true;
-      } else {
-        runs.push_back(std::move(raw));
-        small_run = runs.back().made.size() <= 2;
-        chain_run = false;
-      }
-      const int index = static_cast<int>(runs.size()) - 1;
-      for (int l : runs.back().made) course_of[static_cast<std::size_t>(l)] = index;
-      run_of[c] = index;
-    }
-    courses = std::move(runs);
-  }
-
-  // Flat or round: a tube's rounds knit the front bed one way and the back bed the other.
-  int rounds = 0, sheets = 0;
-  for (const RawCourse& c : courses) {
-    std::set<std::pair<int, int>> ways;  // (carrier, direction) per bed side
-    bool f = false, b = false, tube = false;
-    std::map<int, std::pair<int, int>> by_carrier;  // carrier -> (front direction, back direction)
-    for (int l : c.made) {
-      const Loop& loop = machine.loops()[static_cast<std::size_t>(l)];
-      auto& d = by_carrier[loop.carriers.front()];
-      (front(loop.needle.bed) ? f : b) = true;
-      (front(loop.needle.bed) ? d.first : d.second) = loop.direction;
-    }
-    for (const auto& [carrier, d] : by_carrier) tube = tube || (d.first != 0 && d.second != 0 && d.first != d.second);
-    // Weighed by loops: a bind-off's steps (split on one bed, knit on the other) are not rounds.
-    if (f && b) (tube ? rounds : sheets) += static_cast<int>(c.made.size());
-    if (getenv("KNITOUT_DEBUG") && f && b) fprintf(stderr, "course at line %d: %s\n", program.operations[c.first_operation].line, tube ? "tube" : "sheet");
-  }
-  const bool round = rounds > sheets;
+  Cut cut = cut_courses(program, machine);
+  out.warnings = program.warnings;
+  out.warnings.insert(out.warnings.end(), cut.warnings.begin(), cut.warnings.end());
+  out.front_loops = cut.front_loops;
+  out.back_loops = cut.back_loops;
+  std::vector<RawCourse>& courses = cut.courses;
+  const std::vector<int>& course_of = cut.course_of;
+  const bool round = cut.round;
+  const int last_drop_line = cut.last_drop_line;
 
   Pattern& pattern = out.pattern;
   pattern.knitting = round ? Knitting::round : Knitting::flat;
@@ -579,16 +378,6 @@ Imported import_program(const Program& program, const Profile& profile) {
     for (int l : raw.made)
       if (loops[static_cast<std::size_t>(l)].made_by == Opcode::split)
         for (int q : loops[static_cast<std::size_t>(l)].parents) split_parent[static_cast<std::size_t>(q)] = 0;
-    if (getenv("KNITOUT_DEBUG") && (static_cast<std::size_t>(consumed(course)) != live || static_cast<std::size_t>(produced(course)) != pos.size())) {
-      fprintf(stderr, "line %d: consumed %d of %zu, produced %d of %zu:", first.line, consumed(course), live, produced(course), pos.size());
-      for (const Op& o : course.ops) fprintf(stderr, " %s", std::string(stitch(o.stitch).name).c_str());
-      fprintf(stderr, "\n");
-      for (std::size_t j = 0; j < pos.size(); ++j) {
-        fprintf(stderr, "  %s kind %d:", name(pos[j].needle).c_str(), static_cast<int>(info[j].kind));
-        for (int q : info[j].stitches) fprintf(stderr, " %d", q);
-        fprintf(stderr, "\n");
-      }
-    }
     for (int l : on_needles) stitch_of[static_cast<std::size_t>(l)] = -1;
     on_needles.clear();
     for (std::size_t j = 0; j < pos.size(); ++j)
@@ -648,7 +437,6 @@ Imported import_program(const Program& program, const Profile& profile) {
     out.warnings.push_back(program.file + ":" + std::to_string(last_drop_line) + ": warning: the program ends by dropping " +
                            std::to_string(dropped_at_end) + " live loops of its last course, unsecured; they are drawn open, "
                            "as on the needles (on the machine they would run unless bound off or held by waste yarn)");
-  (void)splits;
   return out;
 }
 

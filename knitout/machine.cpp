@@ -97,8 +97,7 @@ void Machine::check_aligned(const Operation& op, Needle from, Needle to) const {
   }
 }
 
-void Machine::move(const Operation& op, std::size_t index, Needle from, Needle to) {
-  (void)op;
+void Machine::move(std::size_t index, Needle from, Needle to) {
   auto& source = pile_of(from);
   if (source.empty()) return;
   auto& target = pile_of(to);
@@ -152,7 +151,7 @@ void Machine::run(std::size_t index) {
       check_needle(op, op.needle);
       check_needle(op, op.target);
       check_aligned(op, op.needle, op.target);
-      move(op, index, op.needle, op.target);
+      move(index, op.needle, op.target);
       return;
     case Opcode::knit: case Opcode::tuck: case Opcode::split: {
       check_needle(op, op.needle);
@@ -165,7 +164,7 @@ void Machine::run(std::size_t index) {
       check_carriers(op);
       if (op.carriers.empty()) {  // no yarn: knit drops, tuck tugs, split transfers
         if (op.op == Opcode::knit) pile_of(op.needle).clear();
-        if (op.op == Opcode::split) move(op, index, op.needle, op.target);
+        if (op.op == Opcode::split) move(index, op.needle, op.target);
         return;
       }
       Loop l;

@@ -59,7 +59,7 @@ class Machine {
   void check_needle(const Operation& op, Needle n);
   void check_carriers(const Operation& op);
   void check_aligned(const Operation& op, Needle from, Needle to) const;
-  void move(const Operation& op, std::size_t index, Needle from, Needle to);
+  void move(std::size_t index, Needle from, Needle to);
 
   const Program& program_;
   Profile profile_;
