@@ -69,10 +69,16 @@ curves::Options curve_options(const CompileOptions& options) {
   return {options.parametrisation, curves::frame_kind(options.loop_model), options.chord_tolerance, options.threads};
 }
 
+// A yarn dyed along its length colours no two tiles alike.
+bool dyed(const Pattern& pattern) {
+  return std::any_of(pattern.yarns.begin(), pattern.yarns.end(), [](const Yarn& y) { return !y.colours.empty(); });
+}
+
 // A flat fabric relaxed by its repeat may be instanced: then its plain mesh's size, known
 // only once the repeat is tiled, is no reason to refuse it early.
-bool may_tile(const CompileOptions& options, Knitting knitting) {
-  return options.relax && options.view == View::surface && knitting == Knitting::flat && options.instancing != Instancing::flatten;
+bool may_tile(const CompileOptions& options, const Pattern& pattern, Knitting knitting) {
+  return options.relax && options.view == View::surface && knitting == Knitting::flat &&
+         options.instancing != Instancing::flatten && !dyed(pattern);
 }
 
 void report(const CompileOptions& options, const char* stage, double fraction) {
@@ -93,7 +99,7 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
   double per_ring = 1e30;
   for (const Yarn& y : pattern.yarns) per_ring = std::min(per_ring, static_cast<double>(tubes::vertex_count(y, 1000, options.sides)) / 1000.0);
   const double rings_per_loop = 0.5 * 55.0 * std::sqrt(0.01 / options.chord_tolerance);
-  if (static_cast<double>(loops) * rings_per_loop * per_ring > static_cast<double>(max_vertices) && !may_tile(options, pattern.knitting))
+  if (static_cast<double>(loops) * rings_per_loop * per_ring > static_cast<double>(max_vertices) && !may_tile(options, pattern, pattern.knitting))
     too_many_vertices(pattern, static_cast<double>(loops) * rings_per_loop * per_ring, "at least ");
   layout::Layout layout;
   try {
@@ -142,7 +148,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     const auto samples = static_cast<std::size_t>(std::ceil(curves::estimate_samples(path, yarn, curve)));
     estimate += static_cast<double>(tubes::vertex_count(yarn, samples, options.sides));
   }
-  if (estimate > static_cast<double>(max_vertices) && !may_tile(options, fabric.layout.knitting)) too_many_vertices(pattern, estimate, "about ");
+  if (estimate > static_cast<double>(max_vertices) && !may_tile(options, pattern, fabric.layout.knitting)) too_many_vertices(pattern, estimate, "about ");
 
   if (options.relax) {
     report(options, "relax", 0.0);
@@ -199,7 +205,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     vertices += tubes::vertex_count(pattern.yarns[p.path.yarn], p.samples.size(), options.sides);
   report(options, "mesh", 0.0);
   const bool by_repeat = fabric.relaxed && fabric.relaxation.repeat_wales > 0 && !fabric.tiling_refused &&
-                         options.view == View::surface && fabric.layout.knitting == Knitting::flat;
+                         options.view == View::surface && fabric.layout.knitting == Knitting::flat && !dyed(pattern);
   const bool big = vertices > flat_vertices;
   const std::string flat_size = millions(static_cast<double>(vertices)) + " vertices";
   std::string declined;
@@ -207,6 +213,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     declined = options.view != View::surface             ? "only the surface is instanced"
                : fabric.layout.knitting != Knitting::flat ? "work in the round is not tiled"
                : !fabric.relaxed                          ? "not relaxed, so no repeat was tiled"
+               : dyed(pattern)                            ? "a yarn dyed along its length colours no two tiles alike"
                : fabric.tiling_refused                    ? "relaxed whole (tiled, a yarn passed through another)"
                                                           : "relaxed whole, not by a repeat (none found, or its tiled start refused: docs/relaxation.md)";
   }

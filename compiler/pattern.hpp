@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "stitches/stitches.hpp"
+#include "yarn/colour.hpp"
 #include "yarn/size.hpp"
 
 namespace knitc {
@@ -45,6 +46,10 @@ struct Yarn {
   double twist = 0.0;     // plied: turns per 10 cm
   bool z_twist = false;   // plied: Z twist (plies slant like the middle of a Z), else S
   double core_diameter = 1.0 / yarn::free_per_core;  // mm: the compact core, < diameter
+  // Dyed along its length (else empty: `color` throughout): runs repeated end to end, the
+  // ball starting `colour_start` mm into them (yarn/colour.hpp).
+  std::vector<yarn::ColourRun> colours{};
+  double colour_start = 0.0;
   bool operator==(const Yarn&) const = default;
 };
 

@@ -19,12 +19,15 @@ namespace {
 constexpr const char* vertex_source = R"(#version 330 core
 in vec3 position;
 in vec3 normal;
+in vec3 color;  // the yarn's colour here (a dyed yarn), else white
 uniform mat4 mvp;
 uniform mat4 view;
 uniform mat3 normal_matrix;
 out vec3 eye_position;
 out vec3 eye_normal;
+out vec3 vertex_color;
 void main() {
+  vertex_color = color;
   gl_Position = mvp * vec4(position, 1.0);
   eye_position = (view * vec4(position, 1.0)).xyz;
   eye_normal = normal_matrix * normal;
@@ -36,6 +39,7 @@ void main() {
 constexpr const char* fragment_source = R"(#version 330 core
 in vec3 eye_position;
 in vec3 eye_normal;
+in vec3 vertex_color;
 uniform vec3 base_color;
 uniform int shading;  // 0 smooth from the normals, 1 flat from the surface, 2 unlit
 out vec4 frag_color;
@@ -47,7 +51,7 @@ const float fill = 0.25;
 
 void main() {
   if (shading == 2) {
-    frag_color = vec4(base_color, 1.0);
+    frag_color = vec4(base_color * vertex_color, 1.0);
     return;
   }
   vec3 n = shading == 0 ? eye_normal : cross(dFdx(eye_position), dFdy(eye_position));
@@ -60,7 +64,7 @@ void main() {
   float diffuse = ambient + key * max(dot(n, key_dir), 0.0) + fill * max(dot(n, fill_dir), 0.0);
   vec3 half_vector = normalize(key_dir + vec3(0.0, 0.0, 1.0));
   float sheen = 0.06 * pow(max(dot(n, half_vector), 0.0), 24.0);
-  frag_color = vec4(base_color * diffuse + vec3(sheen), 1.0);
+  frag_color = vec4(base_color * vertex_color * diffuse + vec3(sheen), 1.0);
 }
 )";
 
@@ -105,6 +109,9 @@ void validate(const mesh::Mesh& mesh) {
     if (!p.normals.empty() && p.normals.size() != p.positions.size())
       throw std::runtime_error(which + " has " + std::to_string(p.normals.size()) + " normals for " +
                                std::to_string(p.positions.size()) + " positions");
+    if (!p.colors.empty() && p.colors.size() != p.positions.size())
+      throw std::runtime_error(which + " has " + std::to_string(p.colors.size()) + " colours for " +
+                               std::to_string(p.positions.size()) + " positions");
     if (p.positions.size() > static_cast<std::size_t>(INT_MAX))
       throw std::runtime_error(which + " has too many positions to draw");
     std::uint32_t top = 0;
@@ -129,6 +136,7 @@ MeshDrawer::MeshDrawer(const GlFunctions& gl) : gl_(gl) {
   gl.AttachShader(program_, fs);
   gl.BindAttribLocation(program_, 0, "position");
   gl.BindAttribLocation(program_, 1, "normal");
+  gl.BindAttribLocation(program_, 2, "color");
   gl.LinkProgram(program_);
   gl.DeleteShader(vs);  // freed with the program
   gl.DeleteShader(fs);
@@ -190,6 +198,13 @@ void MeshDrawer::draw(const mesh::Mesh& mesh, const Camera& camera, float line_w
       gl.DisableVertexAttribArray(1);
       gl.VertexAttrib3f(1, 0.0f, 0.0f, 1.0f);
     }
+    if (!p.colors.empty()) {
+      gl.EnableVertexAttribArray(2);
+      gl.VertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 0, p.colors.data());
+    } else {
+      gl.DisableVertexAttribArray(2);
+      gl.VertexAttrib3f(2, 1.0f, 1.0f, 1.0f);
+    }
 
     const GLenum mode = gl_mode(p.mode);
     const auto count = static_cast<GLsizei>(p.positions.size());
@@ -211,6 +226,7 @@ void MeshDrawer::draw(const mesh::Mesh& mesh, const Camera& camera, float line_w
   }
   gl.DisableVertexAttribArray(0);
   gl.DisableVertexAttribArray(1);
+  gl.DisableVertexAttribArray(2);
   gl.UseProgram(0);
   check_gl(gl, "drawing the mesh");
 }

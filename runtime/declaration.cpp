@@ -53,6 +53,58 @@ bool is_identifier(const std::string& s) {
   return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
 }
 
+// colors = { {"#rrggbb", cm}, ... }, color_start = cm: a yarn dyed along its length.
+void read_colours(lua_State* L, int t, const std::string& name, Yarn& y) {
+  const auto start = number_field(L, t, name, "color_start");
+  lua_getfield(L, t, "colors");
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    if (start) fail(L, name + ".color_start is for a yarn with colors");
+    return;
+  }
+  const std::string example = "e.g. colors = { {\"#b03030\", 40}, {\"#efe6d2\", 25} } (cm of yarn each)";
+  if (!lua_istable(L, -1)) fail(L, name + ".colors must be a list of {colour, cm} pairs, " + example);
+  lua_getfield(L, t, "color");
+  const bool has_color = !lua_isnil(L, -1);
+  lua_pop(L, 1);
+  if (has_color) fail(L, name + " gives both color and colors; give color for one colour, colors for a dyed sequence");
+  const int list = lua_gettop(L);
+  const auto n = static_cast<std::size_t>(lua_rawlen(L, list));
+  if (n == 0) fail(L, name + ".colors is empty; " + example);
+  if (n > yarn::max_colour_runs)
+    fail(L, name + ".colors has " + std::to_string(n) + " runs; knitc takes at most " + std::to_string(yarn::max_colour_runs));
+  const Field& cm = field("yarn", "color_start");
+  for (std::size_t i = 1; i <= n; ++i) {
+    const std::string what = name + ".colors[" + std::to_string(i) + "]";
+    lua_rawgeti(L, list, static_cast<lua_Integer>(i));
+    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2) fail(L, what + " must be a pair {colour, cm}, " + example);
+    lua_rawgeti(L, -1, 1);
+    lua_rawgeti(L, -2, 2);
+    if (lua_type(L, -2) != LUA_TSTRING) fail(L, what + "'s colour must be a CSS hex string such as \"#b03030\"");
+    const std::string color = text_of(L, -2);
+    const auto hex = normal_hex_color(color);
+    if (!hex) fail(L, what + "'s colour is \"" + printable(color, 40) + "\"; give a CSS hex colour such as \"#b03030\"");
+    if (lua_type(L, -1) != LUA_TNUMBER) fail(L, what + "'s length must be a number of cm, such as 40");
+    const double length = lua_tonumber(L, -1);
+    if (std::isnan(length) || length <= 0.0 || length * 10.0 > yarn::max_run_length)
+      fail(L, what + "'s length is " + (std::isnan(length) ? std::string("NaN") : show(length) + " cm") +
+                  "; a run of colour is more than 0 cm and at most " +
+                  std::to_string(static_cast<long long>(yarn::max_run_length / 10.0)) + " cm");
+    y.colours.push_back({*hex, 10.0 * length});
+    lua_pop(L, 3);
+  }
+  lua_pop(L, 1);
+  if (start) {
+    const double s = *start;
+    if (std::isnan(s) || s < 0.0 || s > cm.hi)
+      fail(L, name + ".color_start is " + (std::isnan(s) ? std::string("NaN") : show(s) + " cm") + "; it must be 0 to " +
+                  std::to_string(static_cast<long long>(cm.hi)) + " cm");
+    y.colour_start = 10.0 * s;
+  }
+  // The material's colour (and the knitout header's): the first run's.
+  y.color = y.colours.front().color;
+}
+
 // section = "circle" | "ellipse" (aspect) | "plied" (plies, twist, direction)
 void read_section(lua_State* L, int t, const std::string& name, Yarn& y) {
   const std::string section = string_field(L, t, name, "section").value_or(std::string(field("yarn", "section").fallback));
@@ -160,6 +212,7 @@ void read_yarns(lua_State* L, int index, Pattern& p) {
     const auto hex = normal_hex_color(color);
     if (!hex) fail(L, name + ".color is \"" + color + "\"; give a CSS hex colour such as \"#d9c8a9\"");
     y.color = *hex;
+    read_colours(L, t, name, y);
     read_section(L, t, name, y);
     p.yarns.push_back(y);
     lua_pop(L, 1);

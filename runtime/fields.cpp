@@ -64,6 +64,11 @@ constexpr Field fields[] = {
     number("yarn", "metres_per_100g", 1, 100000, " m per 100 g", "the yarn's length per 100 g, as its label gives it: the grams used",
            std::nullopt, "the weight's (the table below); tex's; else from the core and the fibre"),
     text("yarn", "color", "#d9c8a9", "a CSS hex colour, \"#rrggbb\" or \"#rgb\""),
+    table("yarn", "colors",
+          "a yarn dyed along its length (instead of color): runs of colour and their lengths in cm, repeated end to end, "
+          "e.g. { {\"#b03030\", 40}, {\"#efe6d2\", 25} }",
+          "one colour"),
+    number("yarn", "color_start", 0, 100000, " cm", "colors: how far into the sequence the ball starts", 0),
     choice("yarn", "section", "circle|ellipse|plied", "circle",
            "circle; ellipse: a yarn pressed flat; plied: plies twisted about the centreline"),
     number("yarn", "aspect", 0.1, 1.0, "", "ellipse: minor / major", 0.7),

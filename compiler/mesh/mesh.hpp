@@ -26,6 +26,9 @@ struct Primitive {
   std::vector<glm::vec3> positions; // mm
   std::vector<glm::vec3> normals;   // empty, or one per position
   std::vector<glm::vec2> uvs;       // empty, or one per position: u in mm along the yarn, v around it in [0, 1]
+  // Empty, or one per position: linear RGB in [0, 1] that multiplies the material's base
+  // colour (glTF's COLOR_0): a yarn dyed along its length.
+  std::vector<glm::vec3> colors;
   std::vector<std::uint32_t> indices;
 };
 

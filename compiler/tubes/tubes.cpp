@@ -59,13 +59,38 @@ mesh::Mode primitive_mode(View view) {
 
 }  // namespace
 
+glm::vec3 colour_along(const Yarn& yarn, double s) {
+  if (yarn.colours.empty()) return linear_rgb(yarn.color);
+  return linear_rgb(yarn.colours[yarn::run_at(yarn.colours, yarn.colour_start, std::max(0.0, s))].color);
+}
+
+std::vector<double> yarn_before(std::span<const curves::CurvePiece> pieces) {
+  std::vector<double> before(pieces.size(), 0.0);
+  int yarn = -1;
+  double length = 0.0;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (pieces[i].path.yarn != yarn) yarn = pieces[i].path.yarn, length = 0.0;
+    before[i] = length;
+    if (!pieces[i].arc_length.empty()) length += pieces[i].arc_length.back();
+  }
+  return before;
+}
+
+// A dyed yarn's sheen: its runs' colours by their lengths.
+glm::vec3 mean_colour(const Yarn& yarn) {
+  if (yarn.colours.empty()) return linear_rgb(yarn.color);
+  glm::dvec3 sum{0.0};
+  for (const yarn::ColourRun& r : yarn.colours) sum += glm::dvec3(linear_rgb(r.color)) * r.length;
+  return glm::vec3(sum / yarn::colour_repeat(yarn.colours));
+}
+
 std::vector<int> add_materials(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, mesh::Mesh& mesh) {
   std::vector<int> material_of(yarns.size(), -1);
   for (const curves::CurvePiece& p : pieces) material_of[static_cast<std::size_t>(p.path.yarn)] = 0;
   for (std::size_t y = 0; y < yarns.size(); ++y) {
     if (material_of[y] < 0) continue;
     material_of[y] = static_cast<int>(mesh.materials.size());
-    const glm::vec3 colour = linear_rgb(yarns[y].color);
+    const glm::vec3 colour = mean_colour(yarns[y]);
     mesh.materials.push_back({yarns[y].id, colour, colour, 0.5f});
   }
   return material_of;
@@ -94,7 +119,7 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
     // Every piece's place in its yarn's primitive is known from its sample count: the
     // arrays are sized once and each piece's tubes are written straight into them, in
     // parallel, with the same bytes for any thread count.
-    std::vector<std::size_t> vertex_at(pieces.size()), index_at(pieces.size());
+    std::vector<std::size_t> vertex_at(pieces.size()), vertex_end(pieces.size()), index_at(pieces.size());
     std::vector<std::size_t> vertices(yarns.size(), 0), indices(yarns.size(), 0);
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       const int y = pieces[i].path.yarn;
@@ -103,6 +128,7 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
       vertex_at[i] = vertices[y];
       index_at[i] = indices[y];
       vertices[y] += size.vertices;
+      vertex_end[i] = vertices[y];
       indices[y] += size.indices;
     }
     std::vector<mesh::Primitive> by_yarn(yarns.size());
@@ -112,13 +138,29 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
       by_yarn[y].positions.resize(vertices[y]);
       by_yarn[y].normals.resize(vertices[y]);
       by_yarn[y].uvs.resize(vertices[y]);
+      if (!yarns[y].colours.empty()) {
+        by_yarn[y].colors.resize(vertices[y]);
+        if (material_of[y] >= 0) out.materials[static_cast<std::size_t>(material_of[y])].base_color = glm::vec3(1.0f);
+      }
       by_yarn[y].indices.resize(indices[y]);
     }
+    const std::vector<double> before = yarn_before(pieces);
+    std::vector<std::vector<glm::vec3>> run_rgb(yarns.size());
+    for (std::size_t y = 0; y < yarns.size(); ++y)
+      for (const yarn::ColourRun& r : yarns[y].colours) run_rgb[y].push_back(linear_rgb(r.color));
     parallel_for(pieces.size(), thread_count(threads), [&](std::size_t i) {
       const curves::CurvePiece& p = pieces[i];
       const Yarn& yarn = yarns[p.path.yarn];
       const auto strands = sweep::strands(p.frames, p.arc_length, cross_section(yarn), p.pressed);
-      sweep::write_tubes(strands, p.arc_length, ring_sides(yarn, sides), by_yarn[p.path.yarn], vertex_at[i], index_at[i]);
+      mesh::Primitive& prim = by_yarn[p.path.yarn];
+      sweep::write_tubes(strands, p.arc_length, ring_sides(yarn, sides), prim, vertex_at[i], index_at[i]);
+      if (prim.colors.empty()) return;
+      // Each vertex by its length along the yarn (TEXCOORD u, the piece's own).
+      const std::vector<glm::vec3>& rgb = run_rgb[static_cast<std::size_t>(p.path.yarn)];
+      for (std::size_t v = vertex_at[i]; v < vertex_end[i]; ++v) {
+        const double s = std::max(0.0, before[i] + static_cast<double>(prim.uvs[v].x));
+        prim.colors[v] = rgb[yarn::run_at(yarn.colours, yarn.colour_start, s)];
+      }
     });
     for (auto& prim : by_yarn) {
       if (!prim.indices.empty()) out.primitives.push_back(std::move(prim));

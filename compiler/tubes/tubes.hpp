@@ -41,13 +41,23 @@ std::uint64_t vertex_count(const Yarn& yarn, std::size_t samples, int sides);
 // baseColorFactor wants. The string must be valid: the runtime checks it.
 glm::vec3 linear_rgb(const std::string& hex);
 
+// The linear RGB of a yarn `s` mm from where the knitter started it: its colour, or the
+// run of its dyed sequence there (yarn/colour.hpp).
+glm::vec3 colour_along(const Yarn& yarn, double s);
+
+// The mm of each piece's yarn before the piece starts: the lengths of that yarn's pieces
+// before it, in working order (pieces go yarn by yarn, each in working order).
+std::vector<double> yarn_before(std::span<const curves::CurvePiece> pieces);
+
 // A material per yarn the pieces use, in the pattern's yarn order (base and sheen colour
 // the yarn's); returns each yarn's material index, -1 for a yarn not used.
 std::vector<int> add_materials(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, mesh::Mesh& mesh);
 
 // The mesh of the pieces, each of yarns[piece.path.yarn]: a material per yarn used (in
 // the yarns' order), and per yarn one triangle (surface) or line (wireframe) primitive,
-// or a line strip per piece (centreline). The same bytes for any thread count.
+// or a line strip per piece (centreline). A surface's dyed yarns carry a colour per vertex
+// (their material white, so the two multiply to the yarn's). The same bytes for any
+// thread count.
 mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, View view, int sides,
                       int threads);
 

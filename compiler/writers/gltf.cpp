@@ -24,7 +24,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 constexpr float metres_per_mm = 0.001f;
-constexpr int gl_float = 5126, gl_unsigned_int = 5125, gl_unsigned_short = 5123, gl_byte = 5120;
+constexpr int gl_float = 5126, gl_unsigned_int = 5125, gl_unsigned_short = 5123, gl_unsigned_byte = 5121, gl_byte = 5120;
 constexpr int gl_array_buffer = 34962, gl_element_array_buffer = 34963;
 
 int gltf_mode(mesh::Mode mode) {
@@ -42,7 +42,7 @@ std::size_t padded(std::size_t n) { return (n + 3) & ~std::size_t{3}; }
 struct Block {
   std::size_t offset = 0, bytes = 0;
   const mesh::Primitive* primitive = nullptr;
-  enum class What { positions, normals, uvs, indices, vectors } what = What::positions;
+  enum class What { positions, normals, uvs, colors, indices, vectors } what = What::positions;
   // KHR_mesh_quantization: positions as uint16 in the mesh's box (then the node's scale
   // and translation), normals as normalised int8; 4-byte aligned elements.
   bool quantized = false;
@@ -82,6 +82,21 @@ void write_quantized(const Block& b, std::ostream& out) {
   }
 }
 
+// COLOR_0 as normalised RGBA bytes (linear, as glTF's vertex colours are): a quarter of
+// floats' size, and each element 4-byte aligned.
+void write_colors(const mesh::Primitive& p, std::ostream& out) {
+  std::array<unsigned char, 4 * 4096> chunk;
+  const auto byte = [](float v) { return static_cast<unsigned char>(std::clamp(std::lround(v * 255.0f), 0L, 255L)); };
+  for (std::size_t first = 0; first < p.colors.size(); first += 4096) {
+    const std::size_t n = std::min<std::size_t>(4096, p.colors.size() - first);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int k = 0; k < 3; ++k) chunk[4 * i + k] = byte(p.colors[first + i][k]);
+      chunk[4 * i + 3] = 255;
+    }
+    out.write(reinterpret_cast<const char*>(chunk.data()), static_cast<std::streamsize>(4 * n));
+  }
+}
+
 void write_block(const Block& b, std::ostream& out) {
   if (b.what == Block::What::vectors) {
     out.write(reinterpret_cast<const char*>(b.vectors->data()), static_cast<std::streamsize>(b.bytes));
@@ -111,6 +126,7 @@ void write_block(const Block& b, std::ostream& out) {
     case Block::What::uvs:
       out.write(reinterpret_cast<const char*>(p.uvs.data()), static_cast<std::streamsize>(b.bytes));
       break;
+    case Block::What::colors: write_colors(p, out); break;
     case Block::What::indices:
       out.write(reinterpret_cast<const char*>(p.indices.data()), static_cast<std::streamsize>(b.bytes));
       break;
@@ -214,6 +230,10 @@ BinaryLayout lay_out_binary(const std::vector<const mesh::Primitive*>& all, cons
     if (!p.uvs.empty())
       attributes["TEXCOORD_0"] = add(p, Block::What::uvs, p.uvs.size() * sizeof(glm::vec2), gl_array_buffer,
                                      {{"componentType", gl_float}, {"count", p.uvs.size()}, {"type", "VEC2"}});
+    if (!p.colors.empty())
+      attributes["COLOR_0"] = add(p, Block::What::colors, p.colors.size() * 4, gl_array_buffer,
+                                  {{"componentType", gl_unsigned_byte}, {"normalized", true}, {"count", p.colors.size()}, {"type", "VEC4"}},
+                                  4);
     prim["attributes"] = std::move(attributes);
     prim["indices"] = add(p, Block::What::indices, p.indices.size() * sizeof(std::uint32_t), gl_element_array_buffer,
                           {{"componentType", gl_unsigned_int}, {"count", p.indices.size()}, {"type", "SCALAR"}});

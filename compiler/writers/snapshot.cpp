@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -97,6 +98,19 @@ std::string snapshot(const Pattern& pattern, const Fabric& fabric, const measure
   char h[32];
   std::snprintf(h, sizeof h, "%016llx", static_cast<unsigned long long>(hash.state));
   out += std::string("geometry    fnv1a64 ") + h + "\n";
+  // A dyed yarn's colours, as the file holds them (8 bits a channel): where the runs fall.
+  Fnv1a colours;
+  bool dyed = false;
+  for (const mesh::Primitive& p : fabric.mesh.primitives) {
+    if (p.colors.empty()) continue;
+    dyed = true;
+    for (const auto& c : p.colors)
+      for (int k = 0; k < 3; ++k) colours.add(static_cast<std::uint64_t>(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255.0f)));
+  }
+  if (dyed) {
+    std::snprintf(h, sizeof h, "%016llx", static_cast<unsigned long long>(colours.state));
+    out += std::string("colours     fnv1a64 ") + h + "\n";
+  }
   return out;
 }
 

@@ -1,0 +1,26 @@
+#include "yarn/colour.hpp"
+
+#include <cassert>
+#include <cmath>
+
+namespace knitc::yarn {
+
+double colour_repeat(std::span<const ColourRun> runs) {
+  double total = 0.0;
+  for (const ColourRun& r : runs) total += r.length;
+  return total;
+}
+
+std::size_t run_at(std::span<const ColourRun> runs, double start, double s) {
+  assert(!runs.empty() && start >= 0.0 && s >= 0.0);
+  const double repeat = colour_repeat(runs);
+  assert(repeat > 0.0);
+  double at = std::fmod(start + s, repeat);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (at < runs[i].length) return i;
+    at -= runs[i].length;
+  }
+  return runs.size() - 1;  // rounding past the last boundary
+}
+
+}  // namespace knitc::yarn
