@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render.hpp"
+#include "trace.hpp"
 #include "view/assets.hpp"
 #include "view/info.hpp"
 #include "writers/writers.hpp"
@@ -81,10 +82,12 @@ int gallery(const GalleryOptions& o) {
       const Fabric fabric = compile(run.pattern, o.compile);
       const std::string glb = writers::glb(fabric.mesh, "knitc " KNITC_VERSION, {true, true, o.compile.threads});
       const std::string info = view::fabric_info(run.pattern, fabric);
-      render::RenderOptions thumbnail;
+      render::TraceOptions thumbnail;  // lit like a photograph, as knitc render draws by default
       thumbnail.width = 480;
       thumbnail.height = 360;
-      files.push_back(writers::text_file((fs::path(o.site) / (stem + ".png")).string(), render::png(fabric.mesh, thumbnail)));
+      thumbnail.threads = o.compile.threads;
+      files.push_back(
+          writers::text_file((fs::path(o.site) / (stem + ".png")).string(), render::traced_png(fabric.mesh, thumbnail)));
       files.push_back(writers::text_file((fs::path(o.site) / (stem + ".fabric.js")).string(),
                                          "window.knitcStatic = {\"glb\": \"" + base64(glb) + "\", \"info\": " + info + "};\n"));
       std::string source;

@@ -35,6 +35,7 @@
 #include "compile.hpp"
 #include "measure/measure.hpp"
 #include "render.hpp"
+#include "trace.hpp"
 #include "runtime.hpp"
 #include "language/chart.hpp"
 #include "writers/writers.hpp"
@@ -58,6 +59,9 @@ struct Args {
   knitc::cli::PrintedArgs printed;  // a printed pattern's declaration
   knitc::CompileOptions compile;
   knitc::render::RenderOptions render;
+  knitc::render::TraceOptions trace;
+  std::string light = "photo";
+  double close_up = 0.0;  // loops across; 0: the whole fabric
   std::string size = "960x720";
   std::optional<knitc::Quality> quality;
   bool stats = false;
@@ -199,7 +203,19 @@ int render(const Args& args) {
   const auto& [pattern, fabric, relax_seconds] = std::get<Compiled>(result);
   std::string png;
   try {
-    png = knitc::render::png(fabric.mesh, args.render);
+    // Traced where there are surfaces to light; lines (wireframes, centrelines) rasterised.
+    if (args.light == "photo" && args.compile.view == knitc::View::surface) {
+      knitc::render::TraceOptions trace = args.trace;
+      trace.width = args.render.width;
+      trace.height = args.render.height;
+      trace.side = args.render.side;
+      trace.background = args.render.background;
+      trace.threads = args.compile.threads;
+      trace.close_up = args.close_up * fabric.layout.loop_width;
+      png = knitc::render::traced_png(fabric.mesh, trace);
+    } else {
+      png = knitc::render::png(fabric.mesh, args.render);
+    }
   } catch (const std::exception& e) {
     report(std::string("knitc: cannot render: ") + e.what());
     return exit_internal;
@@ -438,6 +454,14 @@ void declare_commands(Commands& c) {
       {"both", knitc::render::RenderOptions::Side::both}};
   c.render_cmd->add_option("--side", c.render.render.side, "face (default), back, or both side by side")
       ->transform(CLI::CheckedTransformer(sides, CLI::ignore_case));
+  c.render_cmd->add_option("--light", c.render.light,
+                           "photo (default): rays traced with Embree, soft shadows, occlusion, sheen, a perspective camera; "
+                           "flat: the quick OpenGL preview, key and fill light")
+      ->check(CLI::IsMember({"photo", "flat"}));
+  c.render_cmd->add_option("--samples", c.render.trace.samples, "photo: samples a pixel (default 16)")->check(CLI::Range(1, 1024));
+  c.render_cmd->add_option("--sample-seed", c.render.trace.seed, "photo: the seed of the samples' jitter (default 1)");
+  c.render_cmd->add_option("--close-up", c.render.close_up, "photo: a close-up this many loops across at the fabric's middle")
+      ->check(CLI::Range(1.0, 1000.0));
   add_compile_options(c.render_cmd, c.render);
 
   c.snapshot_cmd = app.add_subcommand("snapshot", "print a stable summary of the compiled mesh, for snapshot tests");

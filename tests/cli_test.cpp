@@ -266,7 +266,16 @@ TEST(Cli, RendersAPreviewPng) {
   };
   EXPECT_EQ(be32(16), 128u);  // face and back side by side
   EXPECT_EQ(be32(20), 48u);
-  for (const char* bad : {"--size 64", "--size 0x10", "--side sideways"}) {
+  // Traced by default; --light flat and a close-up give other pictures of the same size.
+  const auto flat = test::run_knitc("render patterns/jersey.lua -q --relax off --size 64x48 --side both --light flat -o " +
+                                    quoted(dir / "f.png"));
+  ASSERT_EQ(flat.exit_code, 0) << flat.err;
+  EXPECT_NE(test::read_text(dir / "f.png"), png);
+  const auto close = test::run_knitc("render patterns/jersey.lua -q --relax off --size 64x48 --close-up 4 --samples 4 -o " +
+                                     quoted(dir / "c.png"));
+  ASSERT_EQ(close.exit_code, 0) << close.err;
+  for (const char* bad : {"--size 64", "--size 0x10", "--side sideways", "--light dim", "--samples 0", "--samples 5000",
+                          "--close-up 0", "--close-up x"}) {
     EXPECT_EQ(test::run_knitc(std::string("render patterns/jersey.lua -o ") + quoted(dir / "x.png") + " " + bad).exit_code, 2)
         << bad;
   }
