@@ -343,6 +343,11 @@ void add_compile_options(CLI::App* cmd, Args& a) {
       {"surface", knitc::View::surface}, {"wireframe", knitc::View::wireframe}, {"centreline", knitc::View::centreline}};
   cmd->add_option("--view", a.compile.view, "surface (default), wireframe or centreline")
       ->transform(CLI::CheckedTransformer(views, CLI::ignore_case));
+  const std::map<std::string, bool> sections{{"tube", false}, {"fibres", true}};
+  cmd->add_option("--section", a.compile.fibres,
+                  "tube (default): each yarn a tube of its section; fibres: its plies' cores, fibres and flyaways, for "
+                  "close-ups (docs/yarn.md, \"Fibres\")")
+      ->transform(CLI::CheckedTransformer(sections, CLI::ignore_case));
   const std::map<std::string, knitc::nurbs::Parametrisation> params{
       {"chord", knitc::nurbs::Parametrisation::chord_length},
       {"centripetal", knitc::nurbs::Parametrisation::centripetal}};

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "parallel.hpp"
+#include "fibres/fibres.hpp"
 #include "tiles/tiles.hpp"
 
 namespace knitc {
@@ -78,7 +79,7 @@ bool dyed(const Pattern& pattern) {
 // only once the repeat is tiled, is no reason to refuse it early.
 bool may_tile(const CompileOptions& options, const Pattern& pattern, Knitting knitting) {
   return options.relax && options.view == View::surface && knitting == Knitting::flat &&
-         options.instancing != Instancing::flatten && !dyed(pattern);
+         options.instancing != Instancing::flatten && !dyed(pattern) && !options.fibres;
 }
 
 void report(const CompileOptions& options, const char* stage, double fraction) {
@@ -204,6 +205,14 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   for (const CurvePiece& p : fabric.pieces)
     vertices += tubes::vertex_count(pattern.yarns[p.path.yarn], p.samples.size(), options.sides);
   report(options, "mesh", 0.0);
+  if (options.fibres && options.view == View::surface) {
+    const std::uint64_t lines = fibres::fibre_vertices(pattern.yarns, fabric.pieces);
+    if (lines + vertices > max_vertices) too_many_vertices(pattern, static_cast<double>(lines + vertices), "with its fibres ");
+    fabric.mesh = fibres::build_mesh(pattern.yarns, fabric.pieces, options.sides, options.threads);
+    fabric.mesh_choice = "fibres (--section fibres): " + millions(static_cast<double>(lines)) + " fibre vertices round the plies' cores";
+    report(options, "mesh", 1.0);
+    return fabric;
+  }
   const bool by_repeat = fabric.relaxed && fabric.relaxation.repeat_wales > 0 && !fabric.tiling_refused &&
                          options.view == View::surface && fabric.layout.knitting == Knitting::flat && !dyed(pattern);
   const bool big = vertices > flat_vertices;

@@ -68,6 +68,9 @@ struct CompileOptions {
   // than the two fields above: what the programs do unless a quality or either is given.
   bool density_from_view = false;
   Instancing instancing = Instancing::automatic;
+  // Each yarn drawn as its plies' cores and its fibres and flyaways (fibres/fibres.hpp),
+  // for close-ups, rather than as a tube; never instanced.
+  bool fibres = false;
   // Called with a stage's name and how far it is, in [0, 1], from any thread (so it must
   // be thread-safe); for a progress display. It never changes the result.
   std::function<void(const char* stage, double fraction)> progress;

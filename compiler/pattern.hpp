@@ -7,6 +7,7 @@
 
 #include "stitches/stitches.hpp"
 #include "yarn/colour.hpp"
+#include "yarn/fibres.hpp"
 #include "yarn/size.hpp"
 
 namespace knitc {
@@ -50,6 +51,8 @@ struct Yarn {
   // ball starting `colour_start` mm into them (yarn/colour.hpp).
   std::vector<yarn::ColourRun> colours{};
   double colour_start = 0.0;
+  // Its fibres, drawn by --section fibres: the fibre's preset, fields overriding it.
+  yarn::FibreModel fibres{};
   bool operator==(const Yarn&) const = default;
 };
 

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "draw.hpp"
+#include "hashed_random.hpp"
 #include "image.hpp"
 #include "mesh/bounds.hpp"
 #include "parallel.hpp"
@@ -31,18 +32,8 @@ constexpr float sky_radiance = 0.40f;
 constexpr float sheen_strength = 0.35f;
 constexpr float half_field_of_view = 10.0f * std::numbers::pi_v<float> / 180.0f;
 
-// Random numbers from a hash of where they are used: the same for any thread count.
-std::uint64_t mix(std::uint64_t x) {
-  x ^= x >> 33;
-  x *= 0xff51afd7ed558ccdULL;
-  x ^= x >> 33;
-  x *= 0xc4ceb9fe1a85ec53ULL;
-  x ^= x >> 33;
-  return x;
-}
-float uniform(std::uint64_t stream, std::uint32_t dimension) {
-  return static_cast<float>(mix(stream + 0x9e3779b97f4a7c15ULL * (dimension + 1)) >> 40) * 0x1.0p-24f;
-}
+using hashed::mix;
+float uniform(std::uint64_t stream, std::uint32_t dimension) { return static_cast<float>(hashed::uniform(stream, dimension)); }
 
 struct Device {
   RTCDevice device = nullptr;
@@ -77,9 +68,42 @@ struct Scene {
 
 // Each triangle primitive of `primitives` attached to `scene`; returns the primitive of each
 // geometry id.
+// A line primitive's segments as Embree's round linear curves: each segment's two ends
+// (position and radius) copied, so segment i is curve i.
+void attach_fibres(RTCDevice device, RTCScene scene, const mesh::Primitive& p, std::vector<const mesh::Primitive*>& of_id) {
+  const bool strip = p.mode == mesh::Mode::line_strip;
+  const std::size_t segments = strip ? (p.indices.size() < 2 ? 0 : p.indices.size() - 1) : p.indices.size() / 2;
+  if (segments == 0) return;
+  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 2 * segments));
+  auto* first = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), segments));
+  if (v == nullptr || first == nullptr) {
+    rtcReleaseGeometry(g);
+    throw std::runtime_error("render: Embree cannot hold the fibres (out of memory)");
+  }
+  for (std::size_t i = 0; i < segments; ++i) {
+    const std::uint32_t ends[2] = {p.indices[strip ? i : 2 * i], p.indices[strip ? i + 1 : 2 * i + 1]};
+    for (int e = 0; e < 2; ++e) {
+      const glm::vec3& at = p.positions[ends[e]];
+      float* out = v + 4 * (2 * i + static_cast<std::size_t>(e));
+      out[0] = at.x, out[1] = at.y, out[2] = at.z, out[3] = p.line_radius;
+    }
+    first[i] = static_cast<unsigned>(2 * i);
+  }
+  rtcCommitGeometry(g);
+  const unsigned id = rtcAttachGeometry(scene, g);
+  rtcReleaseGeometry(g);
+  if (id >= of_id.size()) of_id.resize(id + 1, nullptr);
+  of_id[id] = &p;
+}
+
 std::vector<const mesh::Primitive*> attach(RTCDevice device, RTCScene scene, const std::vector<mesh::Primitive>& primitives) {
   std::vector<const mesh::Primitive*> of_id;
   for (const mesh::Primitive& p : primitives) {
+    if (p.mode != mesh::Mode::triangles && p.line_radius > 0.0f && !p.positions.empty()) {
+      attach_fibres(device, scene, p, of_id);
+      continue;
+    }
     if (p.mode != mesh::Mode::triangles || p.indices.size() < 3 || p.positions.empty()) continue;
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree's own buffers: it pads them for its vector loads.
@@ -210,24 +234,34 @@ struct Shader {
       p = world.inside[static_cast<std::size_t>(world.group_of[rh.hit.instID[0]])][rh.hit.geomID];
     else
       p = world.plain[rh.hit.geomID];
-    const std::size_t t = 3 * static_cast<std::size_t>(rh.hit.primID);
-    const std::uint32_t i0 = p->indices[t], i1 = p->indices[t + 1], i2 = p->indices[t + 2];
-    const float u = rh.hit.u, v = rh.hit.v, w = 1.0f - u - v;
-
-    glm::vec3 ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+    glm::vec3 ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    const float ng_length = glm::length(ng);
+    ng = ng_length > 1e-20f ? ng / ng_length : -dir;  // a degenerate hit faces the viewer
     if (glm::dot(ng, dir) > 0.0f) ng = -ng;
     glm::vec3 n = ng;
-    if (!p->normals.empty()) {
-      const glm::vec3 s = w * p->normals[i0] + u * p->normals[i1] + v * p->normals[i2];
-      if (glm::dot(s, s) > 1e-12f) n = glm::normalize(s);
-      if (glm::dot(n, dir) > 0.0f) n = -n;  // toward the viewer, keeping its slant
-    }
     const mesh::Material& m = mesh.materials[static_cast<std::size_t>(p->material)];
     glm::vec3 albedo = m.base_color;
-    if (!p->colors.empty()) albedo *= w * p->colors[i0] + u * p->colors[i1] + v * p->colors[i2];
+    const std::size_t prim = rh.hit.primID;
+    if (p->mode == mesh::Mode::triangles) {
+      const std::uint32_t i0 = p->indices[3 * prim], i1 = p->indices[3 * prim + 1], i2 = p->indices[3 * prim + 2];
+      const float u = rh.hit.u, v = rh.hit.v, w = 1.0f - u - v;
+      if (!p->normals.empty()) {
+        const glm::vec3 s = w * p->normals[i0] + u * p->normals[i1] + v * p->normals[i2];
+        if (glm::dot(s, s) > 1e-12f) n = glm::normalize(s);
+        if (glm::dot(n, dir) > 0.0f) n = -n;  // toward the viewer, keeping its slant
+      }
+      if (!p->colors.empty()) albedo *= w * p->colors[i0] + u * p->colors[i1] + v * p->colors[i2];
+    } else if (!p->colors.empty()) {  // a fibre: its segment's two ends
+      const bool strip = p->mode == mesh::Mode::line_strip;
+      const std::uint32_t a = p->indices[strip ? prim : 2 * prim], b = p->indices[strip ? prim + 1 : 2 * prim + 1];
+      albedo *= glm::mix(p->colors[a], p->colors[b], rh.hit.u);
+    }
 
     const glm::vec3 hit = view.eye + rh.ray.tfar * dir;
-    const glm::vec3 from = hit + ng * (1e-4f * (1.0f + glm::length(hit)));
+    // Off the surface before the shadow and sky rays leave; off a fibre by its width, so
+    // they do not meet the fibre they start on.
+    const float lift = 1e-4f * (1.0f + glm::length(hit)) + (p->mode == mesh::Mode::triangles ? 0.0f : 2.5f * p->line_radius);
+    const glm::vec3 from = hit + ng * lift;
 
     // The key light: a point on its disc, one shadow ray.
     const float r = key_radius * std::sqrt(uniform(stream, 2)), phi = 2.0f * std::numbers::pi_v<float> * uniform(stream, 3);

@@ -30,8 +30,8 @@ struct TraceOptions {
   glm::vec3 background{0.7f};  // linear RGB
 };
 
-// Draws the triangles of `mesh` (its lines are not drawn: the rasterised preview draws
-// wireframes) and returns the bytes of an 8-bit sRGB PNG.
+// Draws the triangles of `mesh`, and its lines whose line_radius is > 0 as round fibres of
+// that radius (other lines are not drawn: the rasterised preview draws wireframes), and returns the bytes of an 8-bit sRGB PNG.
 //
 // Camera: perspective (a 20-degree view), square to the fabric from its face (+Z) or its
 // back (-Z, turned about +Y as a knitter turns it), far enough that the fabric's XY extent

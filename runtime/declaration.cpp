@@ -34,6 +34,13 @@ std::string fibre_names() {
 // A number field's value, in its declared range (fields.cpp).
 double in_range(lua_State* L, double v, const std::string& what, const Field& f) {
   const std::string unit(f.unit);
+  if (f.kind == FieldKind::amount) {
+    // A whole bound in full ("100000", not "1e+05").
+    const std::string hi = f.hi == std::floor(f.hi) ? std::to_string(static_cast<long long>(f.hi)) : show(f.hi);
+    if (std::isnan(v) || v < 0.0 || v > f.hi)
+      fail(L, what + " is " + (std::isnan(v) ? std::string("NaN") : show(v) + unit) + "; it must be 0 to " + hi + unit);
+    return v;
+  }
   if (std::isnan(v) || v <= f.lo || v > f.hi)
     fail(L, what + " is " + (std::isnan(v) ? std::string("NaN") : show(v) + unit) + "; it must be more than " +
                 show(f.lo) + unit + " and at most " + show(f.hi) + unit);
@@ -94,15 +101,39 @@ void read_colours(lua_State* L, int t, const std::string& name, Yarn& y) {
     lua_pop(L, 3);
   }
   lua_pop(L, 1);
-  if (start) {
-    const double s = *start;
-    if (std::isnan(s) || s < 0.0 || s > cm.hi)
-      fail(L, name + ".color_start is " + (std::isnan(s) ? std::string("NaN") : show(s) + " cm") + "; it must be 0 to " +
-                  std::to_string(static_cast<long long>(cm.hi)) + " cm");
-    y.colour_start = 10.0 * s;
-  }
+  if (start) y.colour_start = 10.0 * in_range(L, *start, name + ".color_start", cm);
   // The material's colour (and the knitout header's): the first run's.
   y.color = y.colours.front().color;
+}
+
+// The fibre's preset (yarn/fibres.hpp), each field overriding its part.
+void read_fibres(lua_State* L, int t, const std::string& name, const std::string& fibre, Yarn& y) {
+  y.fibres = yarn::fibre_preset(fibre);
+  yarn::FibreModel& m = y.fibres;
+  const auto number = [&](const char* key, double& into) {
+    if (const auto v = number_field(L, t, name, key)) into = in_range(L, *v, name + "." + key, field("yarn", key));
+  };
+  lua_getfield(L, t, "fibre_count");
+  if (!lua_isnil(L, -1)) {
+    const Field& f = field("yarn", "fibre_count");
+    m.fibres_per_ply = static_cast<int>(whole_number(L, lua_gettop(L), name + ".fibre_count", static_cast<long long>(f.lo),
+                                                     static_cast<long long>(f.hi)));
+  }
+  lua_pop(L, 1);
+  number("fibre_diameter", m.fibre_diameter);
+  number("fibre_twist", m.fibre_twist);
+  number("fibre_packing", m.packing);
+  number("fibre_spread", m.spread);
+  number("migration", m.migration);
+  number("migration_period", m.migration_period);
+  number("hairs", m.hairs);
+  number("hair_length", m.hair_length);
+  number("loops", m.loops);
+  number("halo", m.halo);
+  if (y.section == Section::plied) {  // the plies declared are the fibres' plies
+    m.plies = y.plies;
+    m.ply_twist = y.twist;
+  }
 }
 
 // section = "circle" | "ellipse" (aspect) | "plied" (plies, twist, direction)
@@ -214,6 +245,7 @@ void read_yarns(lua_State* L, int index, Pattern& p) {
     y.color = *hex;
     read_colours(L, t, name, y);
     read_section(L, t, name, y);
+    read_fibres(L, t, name, language::lower(string_field(L, t, name, "fibre").value_or(std::string(yarn::default_fibre))), y);
     p.yarns.push_back(y);
     lua_pop(L, 1);
   }

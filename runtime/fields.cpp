@@ -25,6 +25,10 @@ constexpr Field number(std::string_view table, std::string_view key, double lo, 
                        std::string_view doc, std::optional<double> value = std::nullopt, std::string_view default_doc = "") {
   return {table, key, K::number, lo, hi, unit, "", "", value.value_or(0.0), value.has_value(), default_doc, doc};
 }
+constexpr Field amount(std::string_view table, std::string_view key, double hi, std::string_view unit, std::string_view doc,
+                       std::optional<double> value = std::nullopt, std::string_view default_doc = "") {
+  return {table, key, K::amount, 0, hi, unit, "", "", value.value_or(0.0), value.has_value(), default_doc, doc};
+}
 constexpr Field whole(std::string_view table, std::string_view key, double lo, double hi, std::string_view doc,
                       std::optional<double> value = std::nullopt, std::string_view default_doc = "") {
   return {table, key, K::whole, lo, hi, "", "", "", value.value_or(0.0), value.has_value(), default_doc, doc};
@@ -68,13 +72,33 @@ constexpr Field fields[] = {
           "a yarn dyed along its length (instead of color): runs of colour and their lengths in cm, repeated end to end, "
           "e.g. { {\"#b03030\", 40}, {\"#efe6d2\", 25} }",
           "one colour"),
-    number("yarn", "color_start", 0, 100000, " cm", "colors: how far into the sequence the ball starts", 0),
+    amount("yarn", "color_start", 100000, " cm", "colors: how far into the sequence the ball starts", 0),
     choice("yarn", "section", "circle|ellipse|plied", "circle",
            "circle; ellipse: a yarn pressed flat; plied: plies twisted about the centreline"),
     number("yarn", "aspect", 0.1, 1.0, "", "ellipse: minor / major", 0.7),
     whole("yarn", "plies", 2, 6, "plied: how many plies", 2),
     number("yarn", "twist", 0, 200, " turns per 10 cm", "plied: the plies' twist", 15),
     choice("yarn", "direction", "S|Z", "S", "plied: the twist's direction"),
+
+    whole("yarn", "fibre_count", 1, 1000, "--section fibres: fibres drawn in each ply", std::nullopt, "the fibre's"),
+    number("yarn", "fibre_diameter", 0, 0.5, " mm", "--section fibres: a fibre's diameter", std::nullopt, "the fibre's"),
+    amount("yarn", "fibre_twist", 400, " turns per 10 cm", "--section fibres: the fibres' twist about their ply", std::nullopt,
+           "the fibre's"),
+    number("yarn", "fibre_packing", 0, 20, "", "--section fibres: how the fibres crowd the ply's middle (Zhao et al.'s beta)",
+           std::nullopt, "the fibre's"),
+    amount("yarn", "fibre_spread", 0.49, "", "--section fibres: the fibres' density at the ply's edge (Zhao et al.'s epsilon)",
+           std::nullopt, "the fibre's"),
+    amount("yarn", "migration", 1, "", "--section fibres: the innermost a fibre migrates, a fraction of its radius",
+           std::nullopt, "the fibre's"),
+    number("yarn", "migration_period", 0, 100, " turns", "--section fibres: turns about the ply per migration", std::nullopt,
+           "the fibre's"),
+    amount("yarn", "hairs", 500, " per cm", "--section fibres: hair flyaways (free fibre ends) per cm of yarn",
+           std::nullopt, "the fibre's"),
+    number("yarn", "hair_length", 0, 50, " mm", "--section fibres: the yarn's length a hair spans", std::nullopt, "the fibre's"),
+    amount("yarn", "loops", 500, " per cm", "--section fibres: loop flyaways per cm of yarn", std::nullopt,
+           "the fibre's"),
+    amount("yarn", "halo", 20, " yarn radii", "--section fibres: how far flyaways reach beyond the yarn",
+           std::nullopt, "the fibre's"),
 
     whole("course", "rep", 1, static_cast<double>(max_stitches), "the list worked this many times", std::nullopt, "fill the row"),
     text("course", "yarn", "", "a declared yarn to work the whole course in", "the current yarn"),
@@ -98,6 +122,7 @@ std::string range_text(const Field& f) {
   char buf[96];
   switch (f.kind) {
     case K::number: std::snprintf(buf, sizeof buf, "number, more than %g, at most %g%s", f.lo, f.hi, std::string(f.unit).c_str()); return buf;
+    case K::amount: std::snprintf(buf, sizeof buf, "number, 0 to %g%s", f.hi, std::string(f.unit).c_str()); return buf;
     case K::whole: std::snprintf(buf, sizeof buf, "whole number, %.0f to %.0f", f.lo, f.hi); return buf;
     case K::text: return "string";
     case K::table: return "table";

@@ -11,13 +11,13 @@
 
 namespace knitc::runtime {
 
-enum class FieldKind { number, whole, text, choice, table };
+enum class FieldKind { number, amount, whole, text, choice, table };
 
 struct Field {
   std::string_view table;     // "pattern", "gauge", "yarn", "course", "chart"
   std::string_view key;
   FieldKind kind;
-  double lo = 0.0, hi = 0.0;  // number: lo < v <= hi; whole: lo <= v <= hi
+  double lo = 0.0, hi = 0.0;  // number: lo < v <= hi; amount (lo 0) and whole: lo <= v <= hi
   std::string_view unit;      // " mm", " per 10 cm", ...
   std::string_view choices;   // choice: the values, '|' between
   std::string_view fallback;  // text and choice: the default value; empty: none

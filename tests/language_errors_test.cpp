@@ -67,8 +67,9 @@ const BadScript catalogue[] = {
      "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { diameter = 1, core_diameter = 1.2 } } }\n",
      "t.lua:1: yarns.A.core_diameter is 1.2 mm, not less than the free diameter 1 mm; the core is the compact middle of the yarn"},
     {"unknown_fibre",
-     "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { tex = 300, fibre = \"mohair\" } } }\n",
-     "t.lua:1: yarns.A.fibre is \"mohair\"; known fibres: wool, cotton, linen, silk, viscose, acrylic, polyester, nylon"},
+     "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { tex = 300, fibre = \"yak\" } } }\n",
+     "t.lua:1: yarns.A.fibre is \"yak\"; known fibres: wool, cotton, linen, silk, viscose, acrylic, polyester, nylon, mohair, "
+     "alpaca, cashmere"},
     {"tex_zero",
      "pattern { gauge = { stitches = 20, rows = 30 }, yarns = { A = { tex = 0 } } }\n",
      "t.lua:1: yarns.A.tex is 0 tex; it must be more than 0 tex and at most 5e+04 tex"},

@@ -204,9 +204,9 @@ TEST(PrintedFile, BuildsAPrintedPatternWithNoLuaAroundIt) {
   EXPECT_NE(check.err.find("seed.txt: 2 rows, 25 stitches cast on, 25 live at the end"), std::string::npos) << check.err;
   // --cast-on wins over the stated multiple; the .glb is written.
   const auto build = test::run_knitc("build " + quoted(dir / "seed.txt") + " --cast-on 11 --gauge 18x24 --weight worsted -o " +
-                                     quoted(fs::path(KNITC_GLB_DIR) / "printed_seed.glb") + " -q");
+                                     quoted(test::glb_dir() / "printed_seed.glb") + " -q");
   EXPECT_EQ(build.exit_code, 0) << build.err;
-  EXPECT_TRUE(fs::exists(fs::path(KNITC_GLB_DIR) / "printed_seed.glb"));
+  EXPECT_TRUE(fs::exists(test::glb_dir() / "printed_seed.glb"));
   const auto chart = test::run_knitc("chart --cast-on 11 " + quoted(dir / "seed.txt"));
   EXPECT_EQ(chart.out.rfind("# seed: 2 rows on 11 stitches, flat", 0), 0u) << chart.out;
   // A chain selvedge where the text says to slip the first stitch of every row.

@@ -29,6 +29,9 @@ struct Primitive {
   // Empty, or one per position: linear RGB in [0, 1] that multiplies the material's base
   // colour (glTF's COLOR_0): a yarn dyed along its length.
   std::vector<glm::vec3> colors;
+  // Lines only: the radius (mm) of the round fibre each segment stands for, > 0 for a yarn's
+  // fibres (the traced preview draws them as such); 0 draws a line of a pixel or two.
+  float line_radius = 0.0f;
   std::vector<std::uint32_t> indices;
 };
 

@@ -23,7 +23,7 @@ constexpr std::array<Weight, 8> weight_table{{
 }};
 
 // Densities of the dry fibres (Morton and Hearle, Physical Properties of Textile Fibres).
-constexpr std::array<Fibre, 8> fibre_table{{
+constexpr std::array<Fibre, 11> fibre_table{{
     {"wool", 1.31},
     {"cotton", 1.52},
     {"linen", 1.50},
@@ -32,6 +32,9 @@ constexpr std::array<Fibre, 8> fibre_table{{
     {"acrylic", 1.17},
     {"polyester", 1.38},
     {"nylon", 1.14},
+    {"mohair", 1.31},  // animal hair: keratin, as wool
+    {"alpaca", 1.31},
+    {"cashmere", 1.31},
 }};
 
 bool spells(const Weight& w, std::string_view name) {
