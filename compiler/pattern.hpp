@@ -51,6 +51,8 @@ struct Yarn {
   // ball starting `colour_start` mm into them (yarn/colour.hpp).
   std::vector<yarn::ColourRun> colours{};
   double colour_start = 0.0;
+  // Heathered (else empty): fibres of these colours in these shares, blended.
+  std::vector<yarn::FibreColour> heather{};
   // Its fibres, drawn by --section fibres: the fibre's preset, fields overriding it.
   yarn::FibreModel fibres{};
   bool operator==(const Yarn&) const = default;

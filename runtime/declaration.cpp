@@ -60,50 +60,83 @@ bool is_identifier(const std::string& s) {
   return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
 }
 
-// colors = { {"#rrggbb", cm}, ... }, color_start = cm: a yarn dyed along its length.
-void read_colours(lua_State* L, int t, const std::string& name, Yarn& y) {
-  const auto start = number_field(L, t, name, "color_start");
-  lua_getfield(L, t, "colors");
+// A list of {colour, amount} pairs: colors' runs (cm) or heather's shares.
+struct PairWords {
+  const char* key;       // "colors"
+  const char* pair;      // "{colour, cm}"
+  const char* example;   // "e.g. colors = { ... }"
+  const char* amount;    // "length"
+  const char* number;    // "a number of cm, such as 40"
+  const char* unit;      // " cm"
+  const char* range;     // "a run of colour is more than 0 cm and at most "
+  const char* items;     // "runs"
+  double most;           // the largest amount
+  std::size_t most_items;
+};
+
+std::vector<std::pair<std::string, double>> colour_pairs(lua_State* L, int t, const std::string& name, const PairWords& w) {
+  std::vector<std::pair<std::string, double>> out;
+  lua_getfield(L, t, w.key);
   if (lua_isnil(L, -1)) {
     lua_pop(L, 1);
-    if (start) fail(L, name + ".color_start is for a yarn with colors");
-    return;
+    return out;
   }
-  const std::string example = "e.g. colors = { {\"#b03030\", 40}, {\"#efe6d2\", 25} } (cm of yarn each)";
-  if (!lua_istable(L, -1)) fail(L, name + ".colors must be a list of {colour, cm} pairs, " + example);
+  const std::string key = name + "." + w.key;
+  if (!lua_istable(L, -1)) fail(L, key + " must be a list of " + w.pair + " pairs, " + w.example);
   lua_getfield(L, t, "color");
   const bool has_color = !lua_isnil(L, -1);
   lua_pop(L, 1);
-  if (has_color) fail(L, name + " gives both color and colors; give color for one colour, colors for a dyed sequence");
+  if (has_color)
+    fail(L, name + " gives both color and " + w.key + "; give color for one colour, " + w.key +
+                (std::string(w.key) == "colors" ? " for a dyed sequence" : " for fibres of mixed colours"));
   const int list = lua_gettop(L);
   const auto n = static_cast<std::size_t>(lua_rawlen(L, list));
-  if (n == 0) fail(L, name + ".colors is empty; " + example);
-  if (n > yarn::max_colour_runs)
-    fail(L, name + ".colors has " + std::to_string(n) + " runs; knitc takes at most " + std::to_string(yarn::max_colour_runs));
-  const Field& cm = field("yarn", "color_start");
+  if (n == 0) fail(L, key + " is empty; " + w.example);
+  if (n > w.most_items)
+    fail(L, key + " has " + std::to_string(n) + " " + w.items + "; knitc takes at most " + std::to_string(w.most_items));
   for (std::size_t i = 1; i <= n; ++i) {
-    const std::string what = name + ".colors[" + std::to_string(i) + "]";
+    const std::string what = key + "[" + std::to_string(i) + "]";
     lua_rawgeti(L, list, static_cast<lua_Integer>(i));
-    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2) fail(L, what + " must be a pair {colour, cm}, " + example);
+    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2) fail(L, what + " must be a pair " + w.pair + ", " + w.example);
     lua_rawgeti(L, -1, 1);
     lua_rawgeti(L, -2, 2);
     if (lua_type(L, -2) != LUA_TSTRING) fail(L, what + "'s colour must be a CSS hex string such as \"#b03030\"");
     const std::string color = text_of(L, -2);
     const auto hex = normal_hex_color(color);
     if (!hex) fail(L, what + "'s colour is \"" + printable(color, 40) + "\"; give a CSS hex colour such as \"#b03030\"");
-    if (lua_type(L, -1) != LUA_TNUMBER) fail(L, what + "'s length must be a number of cm, such as 40");
-    const double length = lua_tonumber(L, -1);
-    if (std::isnan(length) || length <= 0.0 || length * 10.0 > yarn::max_run_length)
-      fail(L, what + "'s length is " + (std::isnan(length) ? std::string("NaN") : show(length) + " cm") +
-                  "; a run of colour is more than 0 cm and at most " +
-                  std::to_string(static_cast<long long>(yarn::max_run_length / 10.0)) + " cm");
-    y.colours.push_back({*hex, 10.0 * length});
+    if (lua_type(L, -1) != LUA_TNUMBER) fail(L, what + "'s " + w.amount + " must be " + w.number);
+    const double amount = lua_tonumber(L, -1);
+    if (std::isnan(amount) || amount <= 0.0 || amount > w.most)
+      fail(L, what + "'s " + w.amount + " is " + (std::isnan(amount) ? std::string("NaN") : show(amount) + w.unit) + "; " +
+                  w.range + std::to_string(static_cast<long long>(w.most)) + w.unit);
+    out.emplace_back(*hex, amount);
     lua_pop(L, 3);
   }
   lua_pop(L, 1);
-  if (start) y.colour_start = 10.0 * in_range(L, *start, name + ".color_start", cm);
-  // The material's colour (and the knitout header's): the first run's.
-  y.color = y.colours.front().color;
+  return out;
+}
+
+// colors = { {"#rrggbb", cm}, ... }, color_start = cm: a yarn dyed along its length.
+// heather = { {"#rrggbb", share}, ... }: fibres of mixed colours.
+void read_colours(lua_State* L, int t, const std::string& name, Yarn& y) {
+  static constexpr PairWords runs{"colors", "{colour, cm}",
+                                  "e.g. colors = { {\"#b03030\", 40}, {\"#efe6d2\", 25} } (cm of yarn each)", "length",
+                                  "a number of cm, such as 40", " cm", "a run of colour is more than 0 cm and at most ", "runs",
+                                  yarn::max_run_length / 10.0, yarn::max_colour_runs};
+  static constexpr PairWords shares{"heather", "{colour, share}",
+                                    "e.g. heather = { {\"#6b7b8c\", 3}, {\"#d8d2c4\", 1} } (each colour's share of the fibres)",
+                                    "share", "a number, such as 3", "", "a share is more than 0 and at most ", "colours", 1e6,
+                                    yarn::max_fibre_colours};
+  for (const auto& [hex, cm] : colour_pairs(L, t, name, runs)) y.colours.push_back({hex, 10.0 * cm});
+  for (const auto& [hex, share] : colour_pairs(L, t, name, shares)) y.heather.push_back({hex, share});
+  if (!y.colours.empty() && !y.heather.empty())
+    fail(L, name + " gives both colors and heather; knitc dyes a yarn along its length or blends its fibres, not both yet");
+  const auto start = number_field(L, t, name, "color_start");
+  if (start && y.colours.empty()) fail(L, name + ".color_start is for a yarn with colors");
+  if (start) y.colour_start = 10.0 * in_range(L, *start, name + ".color_start", field("yarn", "color_start"));
+  // The material's colour (and the knitout header's): the first run's or fibre colour's.
+  if (!y.colours.empty()) y.color = y.colours.front().color;
+  if (!y.heather.empty()) y.color = y.heather.front().color;
 }
 
 // The fibre's preset (yarn/fibres.hpp), each field overriding its part.

@@ -72,6 +72,10 @@ constexpr Field fields[] = {
           "a yarn dyed along its length (instead of color): runs of colour and their lengths in cm, repeated end to end, "
           "e.g. { {\"#b03030\", 40}, {\"#efe6d2\", 25} }",
           "one colour"),
+    table("yarn", "heather",
+          "a heathered yarn (instead of color): fibres of mixed colours, each with its share, e.g. "
+          "{ {\"#6b7b8c\", 3}, {\"#d8d2c4\", 1} }",
+          "one colour"),
     amount("yarn", "color_start", 100000, " cm", "colors: how far into the sequence the ball starts", 0),
     choice("yarn", "section", "circle|ellipse|plied", "circle",
            "circle; ellipse: a yarn pressed flat; plied: plies twisted about the centreline"),

@@ -260,3 +260,70 @@ TEST(ColourRuns, ANarrowTubeStripesAndAWideOnePoolsDiagonally) {
 
 }  // namespace
 }  // namespace knitc
+
+namespace knitc {
+namespace {
+
+TEST(Heather, FibresOfMixedColoursInTheirShares) {
+  const Pattern p = runtime::run_pattern(
+                        "pattern { gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = \"dk\", heather = { "
+                        "{\"#ff0000\", 3}, {\"#0000ff\", 1} } } }, knitting = \"flat\" }\ncast_on(8)\nrow \"k\"\nrow \"p\"\n"
+                        "row \"k\"\nrow \"p\"\nbind_off()\n",
+                        "t.lua")
+                        .pattern;
+  ASSERT_EQ(p.yarns[0].heather.size(), 2u);
+  EXPECT_EQ(p.yarns[0].heather[1], (yarn::FibreColour{"#0000ff", 1.0}));
+  EXPECT_EQ(yarn::fibre_colour_at(p.yarns[0].heather, 0.74), 0u);
+  EXPECT_EQ(yarn::fibre_colour_at(p.yarns[0].heather, 0.76), 1u);
+  // The material's sheen is the blend; the vertices carry the fibres' colours in their shares.
+  CompileOptions o;
+  o.threads = 2;
+  const Fabric tube = compile(p, o);
+  const mesh::Primitive& prim = tube.mesh.primitives.at(0);
+  ASSERT_EQ(prim.colors.size(), prim.positions.size());
+  const auto red_share = [](const std::vector<glm::vec3>& colours) {
+    std::size_t red = 0;
+    for (const auto& c : colours) red += c == glm::vec3(1, 0, 0);
+    return static_cast<double>(red) / static_cast<double>(colours.size());
+  };
+  EXPECT_NEAR(red_share(prim.colors), 0.75, 0.01);
+  EXPECT_NEAR(tube.mesh.materials[0].sheen_color.r, 0.75f, 1e-6f);
+  EXPECT_NEAR(tube.mesh.materials[0].sheen_color.b, 0.25f, 1e-6f);
+  // With fibres: each fibre one colour, the fibres in their shares; the cores the blend.
+  o.fibres = true;
+  const Fabric fibres = compile(p, o);
+  for (const mesh::Primitive& q : fibres.mesh.primitives) {
+    ASSERT_EQ(q.colors.size(), q.positions.size());
+    if (q.mode == mesh::Mode::lines) {
+      EXPECT_NEAR(red_share(q.colors), 0.75, 0.06);
+    } else {
+      for (const auto& c : q.colors) EXPECT_EQ(c, glm::vec3(0.75f, 0.0f, 0.25f));
+    }
+  }
+}
+
+TEST(Heather, BadBlendsAreRefused) {
+  const auto error_of = [](const std::string& yarn) {
+    try {
+      runtime::run_pattern("pattern { gauge = { stitches = 22, rows = 30 }, yarns = { A = { weight = \"dk\", " + yarn +
+                               " } } }\ncast_on(4)\nrow \"k\"\n",
+                           "t.lua");
+    } catch (const runtime::PatternError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_of("heather = { {\"#fff\", 1} }, colors = { {\"#000\", 5} }"),
+            "t.lua:1: yarns.A gives both colors and heather; knitc dyes a yarn along its length or blends its fibres, not both yet");
+  EXPECT_EQ(error_of("heather = { {\"#fff\", 1} }, color = \"#000\""),
+            "t.lua:1: yarns.A gives both color and heather; give color for one colour, heather for fibres of mixed colours");
+  EXPECT_EQ(error_of("heather = { {\"#fff\", -1} }"),
+            "t.lua:1: yarns.A.heather[1]'s share is -1; a share is more than 0 and at most 1000000");
+  EXPECT_EQ(error_of("heather = { {\"#fff\", \"x\"} }"), "t.lua:1: yarns.A.heather[1]'s share must be a number, such as 3");
+  EXPECT_EQ(error_of("heather = {}"),
+            "t.lua:1: yarns.A.heather is empty; e.g. heather = { {\"#6b7b8c\", 3}, {\"#d8d2c4\", 1} } (each colour's share of the "
+            "fibres)");
+}
+
+}  // namespace
+}  // namespace knitc

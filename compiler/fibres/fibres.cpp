@@ -117,21 +117,26 @@ void lay(const Yarn& yarn, std::size_t yarn_index, std::size_t piece_index, cons
     for (glm::dvec2& a : s.axes) a *= core;
   }
   sweep::append_tubes(cores, p.arc_length, tubes::ring_sides(yarn, sides), out.cores);
-  const bool dyed = !yarn.colours.empty();
+  const bool dyed = !yarn.colours.empty(), heathered = !yarn.heather.empty();
   if (dyed) {
     out.cores.colors.resize(out.cores.positions.size());
     for (std::size_t v = 0; v < out.cores.positions.size(); ++v)
       out.cores.colors[v] = tubes::colour_along(yarn, before + static_cast<double>(out.cores.uvs[v].x));
   }
+  if (heathered) out.cores.colors.assign(out.cores.positions.size(), tubes::mean_colour(yarn));  // the blend, deep inside
+  std::vector<glm::vec3> fibre_rgb;
+  for (const yarn::FibreColour& c : yarn.heather) fibre_rgb.push_back(tubes::linear_rgb(c.color));
+  glm::vec3 fibre_colour{1.0f};  // a heathered yarn's: the fibre being laid's
 
   const std::size_t points = line_points(yarn, pl);
   out.lines.mode = mesh::Mode::lines;
   out.lines.positions.reserve(points);
-  if (dyed) out.lines.colors.reserve(points);
+  if (dyed || heathered) out.lines.colors.reserve(points);
   const auto put = [&](const glm::dvec3& at, double s, bool join) {
     const auto k = static_cast<std::uint32_t>(out.lines.positions.size());
     out.lines.positions.emplace_back(at);
     if (dyed) out.lines.colors.push_back(tubes::colour_along(yarn, before + s));
+    if (heathered) out.lines.colors.push_back(fibre_colour);
     if (join) out.lines.indices.insert(out.lines.indices.end(), {k - 1, k});
   };
 
@@ -158,6 +163,7 @@ void lay(const Yarn& yarn, std::size_t yarn_index, std::size_t piece_index, cons
       Random r = random_for(yarn_index, piece_index, ply, f);
       const double rest = rest_radius(m, r);
       const double theta0 = two_pi * r.uniform(), phase0 = two_pi * r.uniform();
+      if (heathered) fibre_colour = fibre_rgb[yarn::fibre_colour_at(yarn.heather, r.uniform())];
       const std::vector<Bulge>& own = bulges[ply * fibres_in_ply + f];
       Along along{strand.frames, p.arc_length};
       for (std::size_t k = 0; k < pl.fibre_points; ++k) {
@@ -184,6 +190,7 @@ void lay(const Yarn& yarn, std::size_t yarn_index, std::size_t piece_index, cons
     const double s0 = r.uniform() * std::max(0.0, length - span);
     const double theta0 = two_pi * r.uniform(), sweep_angle = (r.uniform() - 0.5) * 3.0;
     const double reach = yarn_radius * (1.0 + m.halo * (0.3 + 0.7 * r.uniform()));
+    if (heathered) fibre_colour = fibre_rgb[yarn::fibre_colour_at(yarn.heather, r.uniform())];
     for (std::size_t k = 0; k < pl.hair_points; ++k) {
       const double t = static_cast<double>(k) / static_cast<double>(pl.hair_points - 1);
       const double s = std::min(length, s0 + t * span);
@@ -238,7 +245,7 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
       append(lines, laid[i].lines);
       laid[i] = {};
     }
-    if (!yarns[y].colours.empty()) out.materials[static_cast<std::size_t>(material_of[y])].base_color = glm::vec3(1.0f);
+    if (!yarns[y].colours.empty() || !yarns[y].heather.empty()) out.materials[static_cast<std::size_t>(material_of[y])].base_color = glm::vec3(1.0f);
     if (!cores.indices.empty()) out.primitives.push_back(std::move(cores));
     if (!lines.indices.empty()) out.primitives.push_back(std::move(lines));
   }

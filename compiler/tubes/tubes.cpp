@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "hashed_random.hpp"
 #include "parallel.hpp"
 
 namespace knitc::tubes {
@@ -76,12 +77,12 @@ std::vector<double> yarn_before(std::span<const curves::CurvePiece> pieces) {
   return before;
 }
 
-// A dyed yarn's sheen: its runs' colours by their lengths.
 glm::vec3 mean_colour(const Yarn& yarn) {
-  if (yarn.colours.empty()) return linear_rgb(yarn.color);
   glm::dvec3 sum{0.0};
-  for (const yarn::ColourRun& r : yarn.colours) sum += glm::dvec3(linear_rgb(r.color)) * r.length;
-  return glm::vec3(sum / yarn::colour_repeat(yarn.colours));
+  double total = 0.0;
+  for (const yarn::ColourRun& r : yarn.colours) sum += glm::dvec3(linear_rgb(r.color)) * r.length, total += r.length;
+  for (const yarn::FibreColour& f : yarn.heather) sum += glm::dvec3(linear_rgb(f.color)) * f.share, total += f.share;
+  return total > 0.0 ? glm::vec3(sum / total) : linear_rgb(yarn.color);
 }
 
 std::vector<int> add_materials(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, mesh::Mesh& mesh) {
@@ -138,7 +139,7 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
       by_yarn[y].positions.resize(vertices[y]);
       by_yarn[y].normals.resize(vertices[y]);
       by_yarn[y].uvs.resize(vertices[y]);
-      if (!yarns[y].colours.empty()) {
+      if (!yarns[y].colours.empty() || !yarns[y].heather.empty()) {
         by_yarn[y].colors.resize(vertices[y]);
         if (material_of[y] >= 0) out.materials[static_cast<std::size_t>(material_of[y])].base_color = glm::vec3(1.0f);
       }
@@ -146,8 +147,10 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
     }
     const std::vector<double> before = yarn_before(pieces);
     std::vector<std::vector<glm::vec3>> run_rgb(yarns.size());
-    for (std::size_t y = 0; y < yarns.size(); ++y)
+    for (std::size_t y = 0; y < yarns.size(); ++y) {
       for (const yarn::ColourRun& r : yarns[y].colours) run_rgb[y].push_back(linear_rgb(r.color));
+      for (const yarn::FibreColour& f : yarns[y].heather) run_rgb[y].push_back(linear_rgb(f.color));
+    }
     parallel_for(pieces.size(), thread_count(threads), [&](std::size_t i) {
       const curves::CurvePiece& p = pieces[i];
       const Yarn& yarn = yarns[p.path.yarn];
@@ -157,6 +160,14 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
       if (prim.colors.empty()) return;
       // Each vertex by its length along the yarn (TEXCOORD u, the piece's own).
       const std::vector<glm::vec3>& rgb = run_rgb[static_cast<std::size_t>(p.path.yarn)];
+      if (!yarn.heather.empty()) {
+        // Heathered: each vertex a fibre colour by its share, drawn from a hash of the piece
+        // and the vertex: a fine speckle where the fibres' colours show through each other.
+        const std::uint64_t key = hashed::mix(static_cast<std::uint64_t>(i) + 0x4ea7e5ULL);
+        for (std::size_t v = vertex_at[i]; v < vertex_end[i]; ++v)
+          prim.colors[v] = rgb[yarn::fibre_colour_at(yarn.heather, hashed::uniform(key, v - vertex_at[i]))];
+        return;
+      }
       for (std::size_t v = vertex_at[i]; v < vertex_end[i]; ++v) {
         const double s = std::max(0.0, before[i] + static_cast<double>(prim.uvs[v].x));
         prim.colors[v] = rgb[yarn::run_at(yarn.colours, yarn.colour_start, s)];

@@ -49,14 +49,18 @@ glm::vec3 colour_along(const Yarn& yarn, double s);
 // before it, in working order (pieces go yarn by yarn, each in working order).
 std::vector<double> yarn_before(std::span<const curves::CurvePiece> pieces);
 
+// A yarn's mean colour: its runs' by length, its heather's by share, else its colour.
+glm::vec3 mean_colour(const Yarn& yarn);
+
 // A material per yarn the pieces use, in the pattern's yarn order (base and sheen colour
-// the yarn's); returns each yarn's material index, -1 for a yarn not used.
+// the yarn's mean); returns each yarn's material index, -1 for a yarn not used.
 std::vector<int> add_materials(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, mesh::Mesh& mesh);
 
 // The mesh of the pieces, each of yarns[piece.path.yarn]: a material per yarn used (in
 // the yarns' order), and per yarn one triangle (surface) or line (wireframe) primitive,
 // or a line strip per piece (centreline). A surface's dyed yarns carry a colour per vertex
-// (their material white, so the two multiply to the yarn's). The same bytes for any
+// (their material white, so the two multiply to the yarn's); a heathered yarn's vertices
+// each take a fibre colour by its share, from a hash of the piece and vertex. The same bytes for any
 // thread count.
 mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, View view, int sides,
                       int threads);

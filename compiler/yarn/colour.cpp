@@ -23,4 +23,16 @@ std::size_t run_at(std::span<const ColourRun> runs, double start, double s) {
   return runs.size() - 1;  // rounding past the last boundary
 }
 
+std::size_t fibre_colour_at(std::span<const FibreColour> colours, double u) {
+  assert(!colours.empty());
+  double total = 0.0;
+  for (const FibreColour& c : colours) total += c.share;
+  double at = u * total;
+  for (std::size_t i = 0; i < colours.size(); ++i) {
+    if (at < colours[i].share) return i;
+    at -= colours[i].share;
+  }
+  return colours.size() - 1;
+}
+
 }  // namespace knitc::yarn

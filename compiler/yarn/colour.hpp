@@ -21,6 +21,19 @@ struct ColourRun {
 inline constexpr std::size_t max_colour_runs = 256;
 inline constexpr double max_run_length = 1'000'000.0;  // 1 km
 
+// A heathered yarn: fibres of several colours blended in the spinning, each colour with its
+// share of the fibres (> 0; the shares need not add to anything).
+struct FibreColour {
+  std::string color;  // CSS hex, "#rrggbb"
+  double share = 0.0;
+  bool operator==(const FibreColour&) const = default;
+};
+inline constexpr std::size_t max_fibre_colours = 64;
+
+// The colour a fibre takes for a uniform number u in [0, 1): each colour for its share of u.
+// `colours` is not empty and every share is > 0.
+std::size_t fibre_colour_at(std::span<const FibreColour> colours, double u);
+
 // The mm of yarn one repeat of `runs` takes.
 double colour_repeat(std::span<const ColourRun> runs);
 
