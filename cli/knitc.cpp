@@ -57,7 +57,11 @@ struct Args {
   std::string centreline;
   knitc::runtime::RunOptions run;
   knitc::cli::PrintedArgs printed;  // a printed pattern's declaration
-  knitc::CompileOptions compile;
+  knitc::CompileOptions compile = [] {
+    knitc::CompileOptions o;
+    o.textures = true;  // the programs bake the yarn's maps unless --textures off
+    return o;
+  }();
   knitc::render::RenderOptions render;
   knitc::render::TraceOptions trace;
   std::string light = "photo";
@@ -348,6 +352,10 @@ void add_compile_options(CLI::App* cmd, Args& a) {
                   "tube (default): each yarn a tube of its section; fibres: its plies' cores, fibres and flyaways, for "
                   "close-ups (docs/yarn.md, \"Fibres\")")
       ->transform(CLI::CheckedTransformer(sections, CLI::ignore_case));
+  cmd->add_option("--textures", a.compile.textures,
+                  "on (default, but for view): bake each yarn's plies and fibres into normal, occlusion and colour maps "
+                  "on its tube (docs/yarn.md, \"Baked textures\"); off: plain tubes")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"on", true}, {"off", false}}, CLI::ignore_case));
   const std::map<std::string, knitc::nurbs::Parametrisation> params{
       {"chord", knitc::nurbs::Parametrisation::chord_length},
       {"centripetal", knitc::nurbs::Parametrisation::centripetal}};
@@ -564,6 +572,9 @@ void settle_defaults(Commands& c) {
     if (cmd->parsed() && cmd->get_option("--relax")->count() == 0)
       args->compile.relax = knitc::relaxed_by_default(args->compile.loop_model);
   }
+  // The live view redraws on every edit and every turn of the camera: bare tubes unless
+  // asked, since under software GL (no GPU) the maps cost a few tenths of a second a frame.
+  if (c.view_cmd->parsed() && c.view_cmd->get_option("--textures")->count() == 0) c.view.compile.textures = false;
   for (auto [cmd, args] : {std::pair{c.build_cmd, &c.build}, std::pair{c.render_cmd, &c.render},
                            std::pair{c.snapshot_cmd, &c.snapshot}, std::pair{c.bench_cmd, &c.bench},
                            std::pair{c.view_cmd, &c.view}, std::pair{c.gallery_cmd, &c.gallery}}) {

@@ -59,6 +59,12 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
                drawn.vertices, drawn.stored_vertices, drawn.stored_vertices - vertices, fabric.mesh.instanced.front().translations.size());
   fmt::print(stderr, "density     {} sides, tolerance {:g} d; {}\n", fabric.density.sides, fabric.density.chord_tolerance,
              fabric.density_choice);
+  for (const knitc::mesh::Material& m : fabric.mesh.materials)
+    if (m.textures.normal >= 0) {
+      const knitc::mesh::Image& image = fabric.mesh.images[static_cast<std::size_t>(m.textures.normal)];
+      fmt::print(stderr, "textures    yarn {}: normal, occlusion and colour maps of {} x {}, a tile every {:.2f} mm of yarn\n",
+                 m.name, image.width, image.height, m.textures.repeat.x);
+    }
   if (!fabric.layout.loops.empty())
     fmt::print(stderr, "per loop    {:.0f} triangles drawn\n", static_cast<double>(drawn.triangles) / static_cast<double>(fabric.layout.loops.size()));
   fmt::print(stderr, "bounds mm   [{:.3f}, {:.3f}, {:.3f}] .. [{:.3f}, {:.3f}, {:.3f}]\n", lo.x, lo.y, lo.z, hi.x, hi.y,

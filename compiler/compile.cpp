@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "parallel.hpp"
+#include "fibres/bake.hpp"
 #include "fibres/fibres.hpp"
 #include "tiles/tiles.hpp"
 
@@ -237,10 +238,12 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
         const tiles::Drawn d = tiles::drawn(tiled.mesh);
         if (d.vertices > max_vertices) too_many_vertices(pattern, static_cast<double>(d.vertices), "");
         fabric.mesh = tiles::flatten(tiled.mesh, options.threads);
+        if (options.textures) fibres::add_baked_textures(pattern.yarns, fabric.pieces, fabric.mesh, options.threads);
         fabric.mesh_choice = "flat (--flatten): every instance written out; " + cells;
       } else {
         fabric.mesh = std::move(tiled.mesh);
         fabric.instanced = true;
+        if (options.textures) fibres::add_baked_textures(pattern.yarns, fabric.pieces, fabric.mesh, options.threads);
         fabric.mesh_choice = std::string("instanced") +
                              (options.instancing == Instancing::instance
                                   ? " (--instance)"
@@ -257,6 +260,8 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   else if (options.instancing == Instancing::instance || big) fabric.mesh_choice = "flat: " + flat_size + "; not instanced: " + declined;
   else fabric.mesh_choice = "flat: " + flat_size + ", within the " + millions(flat_vertices) + " knitc writes flat";
   fabric.mesh = tubes::build_mesh(pattern.yarns, fabric.pieces, options.view, options.sides, options.threads);
+  if (options.textures && options.view == View::surface)
+    fibres::add_baked_textures(pattern.yarns, fabric.pieces, fabric.mesh, options.threads);
   report(options, "mesh", 1.0);
   return fabric;
 }

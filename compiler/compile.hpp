@@ -71,6 +71,10 @@ struct CompileOptions {
   // Each yarn drawn as its plies' cores and its fibres and flyaways (fibres/fibres.hpp),
   // for close-ups, rather than as a tube; never instanced.
   bool fibres = false;
+  // The tube's surface baked from the fibre model into normal, occlusion and colour maps
+  // (fibres/bake.hpp) for a surface mesh of tubes; the programs turn it on unless
+  // --textures off. Off here, for the tests that count a mesh's bytes.
+  bool textures = false;
   // Called with a stage's name and how far it is, in [0, 1], from any thread (so it must
   // be thread-safe); for a progress display. It never changes the result.
   std::function<void(const char* stage, double fraction)> progress;

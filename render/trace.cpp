@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -15,7 +16,9 @@
 #include "hashed_random.hpp"
 #include "image.hpp"
 #include "mesh/bounds.hpp"
+#include "mesh/tangents.hpp"
 #include "parallel.hpp"
+#include "texture.hpp"
 
 namespace knitc::render {
 
@@ -135,7 +138,19 @@ struct World {
   std::vector<const mesh::Primitive*> plain;                // top geometry id -> primitive (null: an instance)
   std::vector<int> group_of;                                // top geometry id -> group (-1: plain)
   std::vector<std::vector<const mesh::Primitive*>> inside;  // group -> its geometry id -> primitive
+  // The tangents of each primitive a normal map bends (mesh/tangents.hpp), interpolated
+  // across a triangle as a viewer's TANGENT is; empty for the others.
+  std::map<const mesh::Primitive*, std::vector<glm::vec4>> tangents;
   World(RTCDevice device, const mesh::Mesh& mesh) : top(device) {
+    const auto add_tangents = [&](const mesh::Primitive& p) {
+      const std::size_t m = static_cast<std::size_t>(p.material);
+      if (p.mode == mesh::Mode::triangles && !p.normals.empty() && !p.uvs.empty() && m < mesh.materials.size() &&
+          mesh.materials[m].textures.normal >= 0)
+        tangents[&p] = mesh::vertex_tangents(p);
+    };
+    for (const mesh::Primitive& p : mesh.primitives) add_tangents(p);
+    for (const mesh::Instances& group : mesh.instanced)
+      for (const mesh::Primitive& p : group.primitives) add_tangents(p);
     rtcSetSceneFlags(top.scene, RTC_SCENE_FLAG_ROBUST);  // no ray slips between two triangles
     plain = attach(device, top.scene, mesh.primitives);
     group_of.assign(plain.size(), -1);
@@ -241,6 +256,7 @@ struct Shader {
     glm::vec3 n = ng;
     const mesh::Material& m = mesh.materials[static_cast<std::size_t>(p->material)];
     glm::vec3 albedo = m.base_color;
+    float occlusion = 1.0f;  // the occlusion map's: the sky a point of the yarn's surface sees
     const std::size_t prim = rh.hit.primID;
     if (p->mode == mesh::Mode::triangles) {
       const std::uint32_t i0 = p->indices[3 * prim], i1 = p->indices[3 * prim + 1], i2 = p->indices[3 * prim + 2];
@@ -248,6 +264,23 @@ struct Shader {
       if (!p->normals.empty()) {
         const glm::vec3 s = w * p->normals[i0] + u * p->normals[i1] + v * p->normals[i2];
         if (glm::dot(s, s) > 1e-12f) n = glm::normalize(s);
+        const mesh::Textures& maps = m.textures;
+        if (maps.any() && !p->uvs.empty()) {
+          // The baked yarn's maps, at the hit's texture coordinate on the repeated tile.
+          const glm::vec2 st = (w * p->uvs[i0] + u * p->uvs[i1] + v * p->uvs[i2]) / maps.repeat;
+          if (const auto found = world.tangents.find(p); maps.normal >= 0 && found != world.tangents.end()) {
+            const std::vector<glm::vec4>& ts = found->second;
+            const glm::vec4 t = w * ts[i0] + u * ts[i1] + v * ts[i2];
+            glm::vec3 tangent = glm::vec3(t) - n * glm::dot(n, glm::vec3(t));
+            tangent = glm::dot(tangent, tangent) > 1e-12f ? glm::normalize(tangent) : glm::vec3(ts[i0]);
+            const glm::vec3 local = 2.0f * texel(mesh.images[static_cast<std::size_t>(maps.normal)], st) - 1.0f;
+            const glm::vec3 bitangent = glm::cross(n, tangent) * (t.w < 0.0f ? -1.0f : 1.0f);
+            const glm::vec3 bent = local.x * tangent + local.y * bitangent + local.z * n;
+            if (glm::dot(bent, bent) > 1e-12f) n = glm::normalize(bent);
+          }
+          if (maps.occlusion >= 0) occlusion = texel(mesh.images[static_cast<std::size_t>(maps.occlusion)], st).r;
+          if (maps.colour >= 0) albedo *= linear_from_srgb(texel(mesh.images[static_cast<std::size_t>(maps.colour)], st));
+        }
         if (glm::dot(n, dir) > 0.0f) n = -n;  // toward the viewer, keeping its slant
       }
       if (!p->colors.empty()) albedo *= w * p->colors[i0] + u * p->colors[i1] + v * p->colors[i2];
@@ -281,7 +314,7 @@ struct Shader {
     // Fibres' sheen: a rim toward grazing angles where the sky reaches.
     const float facing = std::clamp(-glm::dot(n, dir), 0.0f, 1.0f);
     const float rim = sheen_strength * std::pow(1.0f - facing, 4.0f) * open;
-    return albedo * (direct + sky_radiance * open) + m.sheen_color * rim;
+    return albedo * (direct + sky_radiance * open * occlusion) + m.sheen_color * rim * occlusion;
   }
 };
 

@@ -13,11 +13,30 @@ namespace knitc::mesh {
 
 enum class Mode { triangles, lines, line_strip };
 
+// A texture's pixels, 8 bits a channel, rows from the top (texture coordinate t = 0) down.
+struct Image {
+  int width = 0, height = 0, channels = 0;  // channels: 1 (grey) or 3 (RGB)
+  std::vector<unsigned char> pixels;         // width * height * channels
+};
+
+// A material's maps (indices into Mesh::images, -1: none), read through the primitive's
+// TEXCOORD_0 scaled by 1 / repeat (glTF's KHR_texture_transform): a tile `repeat.x` mm of
+// yarn long and `repeat.y` turns round it, repeated. The normal map is in the tangent
+// space glTF's TANGENT gives (mesh/tangents.hpp): red along +u, green along +v.
+struct Textures {
+  int normal = -1;     // RGB: the unit normal, (n + 1) / 2
+  int occlusion = -1;  // grey: the share of the sky a point sees, 1 open
+  int colour = -1;     // RGB, sRGB-encoded: multiplies the base colour
+  glm::vec2 repeat{1.0f};
+  bool any() const { return normal >= 0 || occlusion >= 0 || colour >= 0; }
+};
+
 struct Material {
   std::string name;
   glm::vec3 base_color{1.0f};  // linear RGB in [0, 1]
   glm::vec3 sheen_color{0.0f}; // linear RGB: the soft rim light of fibres (KHR_materials_sheen)
   float sheen_roughness = 0.5f;
+  Textures textures{};
 };
 
 struct Primitive {
@@ -44,6 +63,7 @@ struct Instances {
 
 struct Mesh {
   std::vector<Material> materials;
+  std::vector<Image> images;  // the materials' maps
   std::vector<Primitive> primitives;
   std::vector<Instances> instanced;  // empty: every triangle is in `primitives`
 };

@@ -85,12 +85,21 @@ glm::vec3 mean_colour(const Yarn& yarn) {
   return total > 0.0 ? glm::vec3(sum / total) : linear_rgb(yarn.color);
 }
 
-std::vector<int> add_materials(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, mesh::Mesh& mesh) {
+std::vector<int> material_indices(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces) {
   std::vector<int> material_of(yarns.size(), -1);
   for (const curves::CurvePiece& p : pieces) material_of[static_cast<std::size_t>(p.path.yarn)] = 0;
+  int next = 0;
+  for (int& m : material_of)
+    if (m == 0) m = next++;
+  return material_of;
+}
+
+std::vector<int> add_materials(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, mesh::Mesh& mesh) {
+  const std::size_t first = mesh.materials.size();
+  std::vector<int> material_of = material_indices(yarns, pieces);
   for (std::size_t y = 0; y < yarns.size(); ++y) {
     if (material_of[y] < 0) continue;
-    material_of[y] = static_cast<int>(mesh.materials.size());
+    material_of[y] += static_cast<int>(first);
     const glm::vec3 colour = mean_colour(yarns[y]);
     mesh.materials.push_back({yarns[y].id, colour, colour, 0.5f});
   }

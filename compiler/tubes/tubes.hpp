@@ -52,6 +52,10 @@ std::vector<double> yarn_before(std::span<const curves::CurvePiece> pieces);
 // A yarn's mean colour: its runs' by length, its heather's by share, else its colour.
 glm::vec3 mean_colour(const Yarn& yarn);
 
+// Each yarn's material index: the yarns the pieces use, numbered in the pattern's yarn
+// order; -1 for a yarn not used.
+std::vector<int> material_indices(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces);
+
 // A material per yarn the pieces use, in the pattern's yarn order (base and sheen colour
 // the yarn's mean); returns each yarn's material index, -1 for a yarn not used.
 std::vector<int> add_materials(std::span<const Yarn> yarns, std::span<const curves::CurvePiece> pieces, mesh::Mesh& mesh);

@@ -9,11 +9,15 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <deque>
+
 #include <glm/common.hpp>
 #include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
+#include <stb/stb_image_write.h>
 
 #include "mesh/bounds.hpp"
+#include "mesh/tangents.hpp"
 #include "parallel.hpp"
 #include "writers/writers.hpp"
 
@@ -42,7 +46,7 @@ std::size_t padded(std::size_t n) { return (n + 3) & ~std::size_t{3}; }
 struct Block {
   std::size_t offset = 0, bytes = 0;
   const mesh::Primitive* primitive = nullptr;
-  enum class What { positions, normals, uvs, colors, indices, vectors } what = What::positions;
+  enum class What { positions, normals, uvs, colors, indices, vectors, tangents } what = What::positions;
   // KHR_mesh_quantization: positions as uint16 in the mesh's box (then the node's scale
   // and translation), normals as normalised int8; 4-byte aligned elements.
   bool quantized = false;
@@ -50,6 +54,7 @@ struct Block {
   std::size_t element = 4;         // bytes per vertex (or per index)
   std::size_t count = 0;
   const std::vector<glm::vec3>* vectors = nullptr;  // What::vectors: floats written as they are (instances' TRS)
+  const std::vector<glm::vec4>* tangents = nullptr;  // What::tangents
 };
 
 // A block's bytes as the file holds them uncompressed (for meshopt to encode).
@@ -97,7 +102,27 @@ void write_colors(const mesh::Primitive& p, std::ostream& out) {
   }
 }
 
+// TANGENT: floats, or normalised int8 (4-byte elements) when quantised.
+void write_tangents(const Block& b, std::ostream& out) {
+  const std::vector<glm::vec4>& t = *b.tangents;
+  if (!b.quantized) {
+    out.write(reinterpret_cast<const char*>(t.data()), static_cast<std::streamsize>(b.bytes));
+    return;
+  }
+  std::array<std::int8_t, 4 * 4096> chunk;
+  for (std::size_t first = 0; first < t.size(); first += 4096) {
+    const std::size_t n = std::min<std::size_t>(4096, t.size() - first);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < 4; ++k) chunk[4 * i + k] = quantize_normal(t[first + i][k]);
+    out.write(reinterpret_cast<const char*>(chunk.data()), static_cast<std::streamsize>(4 * n));
+  }
+}
+
 void write_block(const Block& b, std::ostream& out) {
+  if (b.what == Block::What::tangents) {
+    write_tangents(b, out);
+    return;  // 4 or 16 bytes an element: always padded
+  }
   if (b.what == Block::What::vectors) {
     out.write(reinterpret_cast<const char*>(b.vectors->data()), static_cast<std::streamsize>(b.bytes));
     return;  // 12 bytes a vector: always padded
@@ -130,7 +155,8 @@ void write_block(const Block& b, std::ostream& out) {
     case Block::What::indices:
       out.write(reinterpret_cast<const char*>(p.indices.data()), static_cast<std::streamsize>(b.bytes));
       break;
-    case Block::What::vectors: break;
+    case Block::What::vectors:
+    case Block::What::tangents: break;
   }
   static constexpr char zeros[4] = {};
   out.write(zeros, static_cast<std::streamsize>(padded(b.bytes) - b.bytes));
@@ -150,23 +176,52 @@ std::string raw_bytes(const Block& b) {
   return bytes;
 }
 
-// The materials: base colour, not metallic, and the sheen of fibres.
+// A material's map: its texture (one per image, in order), read through TEXCOORD_0 scaled
+// to the tile by KHR_texture_transform.
+json texture_info(int image, const mesh::Textures& t) {
+  return {{"index", image},
+          {"extensions", {{"KHR_texture_transform", {{"scale", {1.0 / t.repeat.x, 1.0 / t.repeat.y}}}}}}};
+}
+
+// The materials: base colour, not metallic, and the sheen of fibres; a baked yarn's maps.
 json materials_json(const mesh::Mesh& mesh) {
   json materials = json::array();
   for (const mesh::Material& m : mesh.materials) {
-    materials.push_back(
-        {{"name", m.name},
-         {"pbrMetallicRoughness",
-          {{"baseColorFactor", {m.base_color.r, m.base_color.g, m.base_color.b, 1.0}},
-           {"metallicFactor", 0.0},  // yarn is a dielectric
-           {"roughnessFactor", 0.85}}},
-         // Fibres scatter light at grazing angles: the soft rim of cloth.
-         {"extensions",
-          {{"KHR_materials_sheen",
-            {{"sheenColorFactor", {m.sheen_color.r, m.sheen_color.g, m.sheen_color.b}},
-             {"sheenRoughnessFactor", m.sheen_roughness}}}}}});
+    json pbr = {{"baseColorFactor", {m.base_color.r, m.base_color.g, m.base_color.b, 1.0}},
+                {"metallicFactor", 0.0},  // yarn is a dielectric
+                {"roughnessFactor", 0.85}};
+    const mesh::Textures& t = m.textures;
+    if (t.colour >= 0) pbr["baseColorTexture"] = texture_info(t.colour, t);
+    json material = {{"name", m.name}, {"pbrMetallicRoughness", std::move(pbr)}};
+    if (t.normal >= 0) material["normalTexture"] = texture_info(t.normal, t);
+    if (t.occlusion >= 0) material["occlusionTexture"] = texture_info(t.occlusion, t);
+    // Fibres scatter light at grazing angles: the soft rim of cloth.
+    material["extensions"] = {{"KHR_materials_sheen",
+                               {{"sheenColorFactor", {m.sheen_color.r, m.sheen_color.g, m.sheen_color.b}},
+                                {"sheenRoughnessFactor", m.sheen_roughness}}}};
+    materials.push_back(std::move(material));
   }
   return materials;
+}
+
+// The images as PNG files (stb), each a texture repeated both ways, mipmapped.
+std::vector<std::string> encode_images(const mesh::Mesh& mesh) {
+  std::vector<std::string> out;
+  for (const mesh::Image& image : mesh.images) {
+    if (image.width < 1 || image.height < 1 || (image.channels != 1 && image.channels != 3) ||
+        image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) *
+                                   static_cast<std::size_t>(image.channels))
+      throw std::runtime_error("glTF: an image's size does not match its pixels");
+    std::string png;
+    const auto append = [](void* context, void* data, int size) {
+      static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+    };
+    if (!stbi_write_png_to_func(append, &png, image.width, image.height, image.channels, image.pixels.data(),
+                                image.width * image.channels))
+      throw std::runtime_error("glTF: cannot encode a texture as PNG");
+    out.push_back(std::move(png));
+  }
+  return out;
 }
 
 // Where every attribute and index array goes in the binary chunk, and the JSON that says so.
@@ -174,10 +229,11 @@ struct BinaryLayout {
   json views = json::array(), accessors = json::array(), primitives = json::array();
   std::vector<Block> blocks;
   std::size_t bytes = 0;  // the uncompressed binary's length
+  std::deque<std::vector<glm::vec4>> tangents;  // TANGENT of the primitives with a normal map
 };
 
-BinaryLayout lay_out_binary(const std::vector<const mesh::Primitive*>& all, const GlbOptions& options, glm::vec3 box_lo,
-                            glm::vec3 step) {
+BinaryLayout lay_out_binary(const std::vector<const mesh::Primitive*>& all, const mesh::Mesh& mesh, const GlbOptions& options,
+                            glm::vec3 box_lo, glm::vec3 step) {
   BinaryLayout b;
   auto add = [&](const mesh::Primitive& p, Block::What what, std::size_t bytes, int target, json accessor,
                  std::size_t stride = 0) {
@@ -230,6 +286,19 @@ BinaryLayout lay_out_binary(const std::vector<const mesh::Primitive*>& all, cons
     if (!p.uvs.empty())
       attributes["TEXCOORD_0"] = add(p, Block::What::uvs, p.uvs.size() * sizeof(glm::vec2), gl_array_buffer,
                                      {{"componentType", gl_float}, {"count", p.uvs.size()}, {"type", "VEC2"}});
+    // A normal map needs the tangent its red channel runs along (mesh/tangents.hpp).
+    const bool mapped = p.mode == mesh::Mode::triangles && !p.normals.empty() && !p.uvs.empty() && p.material >= 0 &&
+                        static_cast<std::size_t>(p.material) < mesh.materials.size() &&
+                        mesh.materials[static_cast<std::size_t>(p.material)].textures.normal >= 0;
+    if (mapped) {
+      b.tangents.push_back(mesh::vertex_tangents(p));
+      const std::size_t element = options.quantize ? 4 : sizeof(glm::vec4);
+      json accessor = {{"componentType", options.quantize ? gl_byte : gl_float}, {"count", p.positions.size()}, {"type", "VEC4"}};
+      if (options.quantize) accessor["normalized"] = true;
+      attributes["TANGENT"] = add(p, Block::What::tangents, p.positions.size() * element, gl_array_buffer, accessor,
+                                  options.quantize ? 4 : 0);
+      b.blocks.back().tangents = &b.tangents.back();
+    }
     if (!p.colors.empty())
       attributes["COLOR_0"] = add(p, Block::What::colors, p.colors.size() * 4, gl_array_buffer,
                                   {{"componentType", gl_unsigned_byte}, {"normalized", true}, {"count", p.colors.size()}, {"type", "VEC4"}},
@@ -292,7 +361,7 @@ std::vector<std::string> encode_meshopt(BinaryLayout& layout, std::size_t& binar
 
 // The .glb container: header, the JSON chunk (padded with spaces), the binary chunk.
 void write_chunks(std::ostream& out, std::string text, std::size_t binary, const BinaryLayout& layout,
-                  const std::vector<std::string>& encoded, bool meshopt) {
+                  const std::vector<std::string>& encoded, bool meshopt, const std::vector<std::string>& pngs) {
   text.resize(padded(text.size()), ' ');
   const std::size_t total = 12 + 8 + text.size() + 8 + binary;
   if (total > std::numeric_limits<std::uint32_t>::max())
@@ -305,14 +374,18 @@ void write_chunks(std::ostream& out, std::string text, std::size_t binary, const
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
   put_u32(out, static_cast<std::uint32_t>(binary));
   put_u32(out, 0x004E4942u);  // BIN
+  static constexpr char zeros[4] = {};
   if (meshopt) {
-    static constexpr char zeros[4] = {};
     for (const std::string& blob : encoded) {
       out.write(blob.data(), static_cast<std::streamsize>(blob.size()));
       out.write(zeros, static_cast<std::streamsize>(padded(blob.size()) - blob.size()));
     }
   } else {
     for (const Block& b : layout.blocks) write_block(b, out);
+  }
+  for (const std::string& png : pngs) {
+    out.write(png.data(), static_cast<std::streamsize>(png.size()));
+    out.write(zeros, static_cast<std::streamsize>(padded(png.size()) - png.size()));
   }
 }
 
@@ -333,6 +406,7 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
   // The extensions, in the order earlier files listed them.
   json used = json::array(), required = json::array();
   if (!mesh.materials.empty()) used.push_back("KHR_materials_sheen");
+  if (!mesh.images.empty()) used.push_back("KHR_texture_transform");
   if (instances != nullptr) {
     used.push_back("EXT_mesh_gpu_instancing");
     required.push_back("EXT_mesh_gpu_instancing");
@@ -346,17 +420,19 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
     required.push_back("EXT_meshopt_compression");
   }
   // The quantisation grid: the box of every stored position (the tile's in its own frame)
-  // in 65535 steps per axis.
+  // in 65535 steps of its longest side, the same step on every axis: a uniform scale
+  // leaves the normals and tangents stored as they are (a non-uniform one would bend them).
   mesh::Bounds box;
   for (const auto* p : plain)
     for (const auto& v : p->positions) box.add(v);
   for (const auto* p : tile)
     for (const auto& v : p->positions) box.add(v);
   const glm::vec3 box_lo = box.min, box_hi = box.max;
-  const glm::vec3 step = glm::max((box_hi - box_lo) / 65535.0f, glm::vec3(1e-6f));
+  const glm::vec3 extent = box_hi - box_lo;
+  const glm::vec3 step(std::max({extent.x / 65535.0f, extent.y / 65535.0f, extent.z / 65535.0f, 1e-6f}));
   std::vector<const mesh::Primitive*> all = plain;
   all.insert(all.end(), tile.begin(), tile.end());
-  BinaryLayout layout = lay_out_binary(all, options, box_lo, step);
+  BinaryLayout layout = lay_out_binary(all, mesh, options, box_lo, step);
   json nodes = json::array(), meshes = json::array();
   if (!plain.empty()) {
     json node = {{"name", "fabric"}, {"mesh", meshes.size()}};
@@ -406,13 +482,20 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
   }
   std::vector<std::string> encoded;
   std::size_t binary = layout.bytes;
-  json buffers = json::array({{{"byteLength", layout.bytes}}});
-  if (options.meshopt) {
-    encoded = encode_meshopt(layout, binary, options.threads);
-    // The uncompressed layout stays as a fallback buffer with no data.
-    buffers = json::array({{{"byteLength", binary}},
-                           {{"byteLength", layout.bytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}});
+  if (options.meshopt) encoded = encode_meshopt(layout, binary, options.threads);
+  // The textures' PNGs after the arrays (or their encoding), in the first buffer, as they are.
+  const std::vector<std::string> pngs = encode_images(mesh);
+  json images = json::array(), textures = json::array();
+  for (const std::string& png : pngs) {
+    layout.views.push_back({{"buffer", 0}, {"byteOffset", binary}, {"byteLength", png.size()}});
+    images.push_back({{"bufferView", layout.views.size() - 1}, {"mimeType", "image/png"}});
+    textures.push_back({{"sampler", 0}, {"source", images.size() - 1}});
+    binary += padded(png.size());
   }
+  json buffers = json::array({{{"byteLength", binary}}});
+  // The uncompressed layout stays as a fallback buffer with no data.
+  if (options.meshopt)
+    buffers.push_back({{"byteLength", layout.bytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
   json doc;
   doc["asset"] = {{"version", "2.0"}, {"generator", generator}};
   if (!required.empty()) doc["extensionsRequired"] = std::move(required);
@@ -423,11 +506,17 @@ void write_glb(const mesh::Mesh& mesh, const std::string& generator, std::ostrea
   doc["scenes"] = json::array({{{"nodes", std::move(scene_nodes)}}});
   doc["nodes"] = std::move(nodes);
   if (json materials = materials_json(mesh); !materials.empty()) doc["materials"] = std::move(materials);
+  if (!pngs.empty()) {
+    // Linear filtering, mipmapped, repeated: the tile wraps along the yarn and round it.
+    doc["samplers"] = json::array({{{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 10497}, {"wrapT", 10497}}});
+    doc["images"] = std::move(images);
+    doc["textures"] = std::move(textures);
+  }
   doc["meshes"] = std::move(meshes);
   doc["accessors"] = std::move(layout.accessors);
   doc["buffers"] = std::move(buffers);
   doc["bufferViews"] = std::move(layout.views);
-  write_chunks(out, doc.dump(), binary, layout, encoded, options.meshopt);
+  write_chunks(out, doc.dump(), binary, layout, encoded, options.meshopt, pngs);
 }
 
 std::string glb(const mesh::Mesh& mesh, const std::string& generator, const GlbOptions& options) {

@@ -111,6 +111,18 @@ std::string snapshot(const Pattern& pattern, const Fabric& fabric, const measure
     std::snprintf(h, sizeof h, "%016llx", static_cast<unsigned long long>(colours.state));
     out += std::string("colours     fnv1a64 ") + h + "\n";
   }
+  // The baked maps (fibres/bake.hpp), every texel, and the tile each material repeats.
+  if (!fabric.mesh.images.empty()) {
+    Fnv1a maps;
+    for (const mesh::Image& image : fabric.mesh.images) {
+      maps.add(static_cast<std::uint64_t>(image.width));
+      maps.add(static_cast<std::uint64_t>(image.height));
+      for (unsigned char c : image.pixels) maps.add(c);
+    }
+    for (const mesh::Material& material : fabric.mesh.materials) maps.add(static_cast<std::uint64_t>(micrometres(material.textures.repeat.x)));
+    std::snprintf(h, sizeof h, "%016llx", static_cast<unsigned long long>(maps.state));
+    out += "textures    " + std::to_string(fabric.mesh.images.size()) + " maps, fnv1a64 " + h + "\n";
+  }
   return out;
 }
 

@@ -19,9 +19,13 @@ namespace knitc::writers {
 // mesh with a primitive per mesh primitive, one material per mesh material (base colour,
 // not metallic), uint32 indices, POSITION with min and max, NORMAL where present.
 // `generator` goes to asset.generator. Throws std::runtime_error if serialisation fails.
+// A material's maps (mesh::Textures) are PNG images in the binary chunk, each a texture
+// read through TEXCOORD_0 with KHR_texture_transform's scale; a primitive whose material has
+// a normal map gets its TANGENT (mesh/tangents.hpp).
 // With quantize (KHR_mesh_quantization, a required extension): positions as uint16 on a
-// grid of the mesh's box in 65535 steps per axis (the node's scale and translation map it
-// back to metres; about 1.2 micrometres on an 8 cm swatch), normals as normalised int8.
+// grid of the mesh's box in 65535 steps of its longest side, the same step on every axis
+// (the node's uniform scale and translation map it back to metres; about 1.2 micrometres on
+// an 8 cm swatch), normals and tangents as normalised int8.
 // With meshopt (EXT_meshopt_compression, required): every buffer view encoded by
 // meshoptimizer, the uncompressed layout kept as a fallback buffer without data.
 struct GlbOptions {

@@ -3,6 +3,10 @@
 // instances, triangles drawn, the scene's box, and the share of a rendered frame the fabric
 // covers. Usage: node show.mjs [--png DIR] FILE.glb...  Prints one JSON object a file, a
 // line each; exits 1 if a file does not load, 2 on misuse.
+//   --zoom K   frame the middle 1/K of the fabric (a close-up K times nearer)
+//   --maps     also report each material's texture maps, and draw the frame a second time
+//              with the maps taken off, reporting both frames' detail (the mean step in
+//              brightness between neighbouring fabric pixels) and how far the two differ
 //
 // The page and three.js are served from this folder's node_modules by a server on
 // 127.0.0.1 that serves only those files and the named .glb files; nothing is fetched
@@ -17,13 +21,19 @@ import puppeteer from 'puppeteer-core';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const args = process.argv.slice(2);
-let pngDir = null;
-if (args[0] === '--png') {
-  pngDir = args[1];
-  args.splice(0, 2);
+let pngDir = null, zoom = 1, maps = false;
+for (;;) {
+  if (args[0] === '--png' && args.length > 1) pngDir = args.splice(0, 2)[1];
+  else if (args[0] === '--zoom' && args.length > 1) zoom = Number(args.splice(0, 2)[1]);
+  else if (args[0] === '--maps') maps = Boolean(args.splice(0, 1));
+  else break;
+}
+if (!(zoom >= 1 && zoom <= 1000)) {
+  console.error('show.mjs: --zoom takes a number from 1 to 1000');
+  process.exit(2);
 }
 if (args.length === 0 || args.some((a) => a.startsWith('-'))) {
-  console.error('usage: node show.mjs [--png DIR] FILE.glb...');
+  console.error('usage: node show.mjs [--png DIR] [--zoom K] [--maps] FILE.glb...');
   process.exit(2);
 }
 for (const file of args) {
@@ -47,7 +57,22 @@ const page = `<!doctype html><html><head><meta charset="utf-8">
 import * as THREE from 'three';
 import { GLTFLoader } from '/jsm/loaders/GLTFLoader.js';
 import { MeshoptDecoder } from '/jsm/libs/meshopt_decoder.module.js';
-window.show = async (url) => {
+// The fabric's pixels (not the white background) and their mean brightness step to the
+// right-hand neighbour.
+function measure(pixels, width, height) {
+  let fabric = 0, steps = 0, step = 0;
+  const isFabric = (i) => pixels[i] < 245 || pixels[i + 1] < 245 || pixels[i + 2] < 245;
+  const light = (i) => 0.2126 * pixels[i] + 0.7152 * pixels[i + 1] + 0.0722 * pixels[i + 2];
+  for (let y = 0; y < height; ++y)
+    for (let x = 0; x < width; ++x) {
+      const i = 4 * (y * width + x);
+      if (!isFabric(i)) continue;
+      fabric += 1;
+      if (x + 1 < width && isFabric(i + 4)) { step += Math.abs(light(i + 4) - light(i)); steps += 1; }
+    }
+  return { fabric, detail: steps ? step / steps : 0 };
+}
+window.show = async (url, zoom, maps) => {
   const t0 = performance.now();
   const loader = new GLTFLoader().setMeshoptDecoder(MeshoptDecoder);
   const gltf = await loader.loadAsync(url);
@@ -75,7 +100,7 @@ window.show = async (url) => {
   const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
   const camera = new THREE.PerspectiveCamera(30, canvas.width / canvas.height, 1e-4, 100);
   const reach = Math.max(size.x, size.y / (canvas.height / canvas.width)) / 2 / Math.tan(THREE.MathUtils.degToRad(15) * canvas.width / canvas.height);
-  camera.position.set(centre.x, centre.y, centre.z + 1.2 * Math.max(reach, size.y / 2 / Math.tan(THREE.MathUtils.degToRad(15))));
+  camera.position.set(centre.x, centre.y, centre.z + 1.2 * Math.max(reach, size.y / 2 / Math.tan(THREE.MathUtils.degToRad(15))) / zoom);
   camera.lookAt(centre);
   const gl = renderer.getContext();
   const t1 = performance.now();
@@ -84,13 +109,50 @@ window.show = async (url) => {
   gl.readPixels(0, 0, canvas.width, canvas.height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);  // waits for the frame
   const drawn = performance.now() - t1;
   // The fabric's share of the frame: pixels that are not the white background.
-  let fabric = 0;
-  for (let i = 0; i < pixels.length; i += 4) if (pixels[i] < 245 || pixels[i + 1] < 245 || pixels[i + 2] < 245) fabric += 1;
+  const seen = measure(pixels, canvas.width, canvas.height);
   const image = canvas.toDataURL('image/png');
+  const report = { load_ms: loaded, frame_ms: drawn, meshes, instanced_meshes: instanced, instances, triangles,
+                   min: box.min.toArray(), max: box.max.toArray(), fabric_share: seen.fabric / (canvas.width * canvas.height),
+                   webgl: gl.getParameter(gl.VERSION), image };
+  if (maps) {
+    // What the loader made of each material's maps, then the same frame without them.
+    const materials = new Map();
+    gltf.scene.traverse((o) => { if (o.isMesh) materials.set(o.material.uuid, o.material); });
+    const size = (t) => (t && t.image ? [t.image.width, t.image.height] : null);
+    report.materials = [...materials.values()].map((m) => ({
+      name: m.name, normal: size(m.normalMap), occlusion: size(m.aoMap), colour: size(m.map),
+      repeat: m.normalMap ? m.normalMap.repeat.toArray() : null, tangents: false }));
+    gltf.scene.traverse((o) => { if (o.isMesh) report.materials.forEach((r) => { if (r.name === o.material.name) r.tangents = Boolean(o.geometry.attributes.tangent); }); });
+    report.detail = seen.detail;
+    // The frame's colours: the share of fabric pixels clearly red, green or blue.
+    const hue = (px) => {
+      const share = [0, 0, 0];
+      let n = 0;
+      for (let i = 0; i < px.length; i += 4) {
+        if (!(px[i] < 245 || px[i + 1] < 245 || px[i + 2] < 245)) continue;
+        n += 1;
+        for (let c = 0; c < 3; ++c) if (px[i + c] > px[i + (c + 1) % 3] + 40 && px[i + c] > px[i + (c + 2) % 3] + 40) share[c] += 1;
+      }
+      return share.map((k) => k / Math.max(1, n));
+    };
+    report.hues = hue(pixels);
+    for (const m of materials.values()) { m.normalMap = null; m.aoMap = null; m.map = null; m.needsUpdate = true; }
+    renderer.render(scene, camera);
+    const bare = new Uint8Array(pixels.length);
+    gl.readPixels(0, 0, canvas.width, canvas.height, gl.RGBA, gl.UNSIGNED_BYTE, bare);
+    report.detail_without_maps = measure(bare, canvas.width, canvas.height).detail;
+    report.hues_without_maps = hue(bare);
+    let changed = 0;
+    for (let i = 0; i < pixels.length; i += 4)
+      if (Math.abs(pixels[i] - bare[i]) + Math.abs(pixels[i + 1] - bare[i + 1]) + Math.abs(pixels[i + 2] - bare[i + 2]) > 24) changed += 1;
+    report.changed_share = changed / (canvas.width * canvas.height);
+    // The pixel at the middle of the frame, with and without the maps.
+    const mid = 4 * ((canvas.height >> 1) * canvas.width + (canvas.width >> 1));
+    report.middle_pixel = [...pixels.slice(mid, mid + 3)];
+    report.middle_pixel_without_maps = [...bare.slice(mid, mid + 3)];
+  }
   renderer.dispose();
-  return { load_ms: loaded, frame_ms: drawn, meshes, instanced_meshes: instanced, instances, triangles,
-           min: box.min.toArray(), max: box.max.toArray(), fabric_share: fabric / (canvas.width * canvas.height),
-           webgl: gl.getParameter(gl.VERSION), image };
+  return report;
 };
 window.ready = true;
 </script></body></html>`;
@@ -142,7 +204,7 @@ try {
   });
   for (let i = 0; i < args.length; ++i) {
     try {
-      const r = await tab.evaluate((url) => window.show(url), `/file${i}.glb`);
+      const r = await tab.evaluate((url, z, m) => window.show(url, z, m), `/file${i}.glb`, zoom, maps);
       if (pngDir) await writeFile(join(pngDir, basename(args[i]).replace(/\.glb$/, '') + '.browser.png'), Buffer.from(r.image.split(',')[1], 'base64'));
       delete r.image;
       console.log(JSON.stringify({ file: args[i], ...r }));

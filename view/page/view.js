@@ -91,10 +91,8 @@ async function loadFabric(version) {
 
 function show(gltf, info, version) {
   const first = view.fabric === null;
-  if (view.fabric) {
-    scene.remove(view.fabric);
-    view.fabric.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
-  }
+  const old = view.fabric;
+  if (old) scene.remove(old);
   // glTF is in metres; the page works in the fabric's millimetres, as its loops are given.
   view.fabric = new THREE.Group();
   view.fabric.scale.setScalar(1000);
@@ -113,6 +111,17 @@ function show(gltf, info, version) {
   if (first) look('face');  // later builds keep the camera where the designer left it
   camera.updateMatrixWorld();
   view.drawNow();
+  // The old fabric's geometry, materials and maps leave the GPU only now: the new materials
+  // have taken the same shader programs first, so they are not compiled again.
+  if (old) {
+    old.traverse((o) => {
+      if (o.geometry) o.geometry.dispose();
+      if (o.material) {
+        for (const map of ['map', 'normalMap', 'aoMap']) if (o.material[map]) o.material[map].dispose();
+        o.material.dispose();
+      }
+    });
+  }
   view.fabricVersion = version;
 }
 
