@@ -261,6 +261,42 @@ TEST(Tube, APressedRoundYarnFlattensAcrossThePressingKeepingItsArea) {
   EXPECT_TRUE(sweep::strands(f, s, round)[0].axes.empty());
 }
 
+// Plies pressed flat: their centres spread onto the pressed section's ellipse (the plies'
+// own radius kept), while their twist keeps the frame's phase; unpressed, the helix as ever.
+TEST(Tube, PressedPliesSpreadAlongTheMajorAxis) {
+  sweep::Frames f;
+  std::vector<double> s;
+  std::vector<glm::dvec3> pressed;
+  for (int i = 0; i < 41; ++i) {
+    f.origin.push_back({i * 0.25, 0.0, 0.0});
+    f.tangent.push_back({1.0, 0.0, 0.0});
+    f.normal.push_back({0.0, 1.0, 0.0});
+    f.binormal.push_back({0.0, 0.0, 1.0});
+    s.push_back(i * 0.25);
+    pressed.push_back({0.0, 0.0, 0.36});  // pressed along z, aspect 0.64
+  }
+  sweep::CrossSection plied;
+  plied.shape = sweep::CrossSection::Shape::plied;
+  plied.radius = 0.5;
+  plied.plies = 2;
+  plied.twist = 0.1;  // a turn every 10 mm: the 10 mm piece turns once
+  const auto flat = sweep::strands(f, s, plied, pressed), round = sweep::strands(f, s, plied);
+  ASSERT_EQ(flat.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    double y = 0.0, z = 0.0, y0 = 0.0, z0 = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const glm::dvec3 d = flat[k].frames.origin[i] - f.origin[i], d0 = round[k].frames.origin[i] - f.origin[i];
+      y = std::max(y, std::abs(d.y)), z = std::max(z, std::abs(d.z));
+      y0 = std::max(y0, std::abs(d0.y)), z0 = std::max(z0, std::abs(d0.z));
+    }
+    EXPECT_NEAR(y0, 0.25, 1e-3);  // two touching plies: centres at half the radius
+    EXPECT_NEAR(z0, 0.25, 1e-3);
+    EXPECT_NEAR(y, 0.25 / 0.8, 1e-3);  // across the pressing: over sqrt(aspect)
+    EXPECT_NEAR(z, 0.25 * 0.8, 1e-3);  // along it: times sqrt(aspect)
+    EXPECT_EQ(flat[k].along_normal, round[k].along_normal);
+  }
+}
+
 TEST(Tube, WireframeHasRingsAndLongEdges) {
   CompileOptions o;
   o.view = View::wireframe;

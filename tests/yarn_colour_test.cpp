@@ -141,7 +141,8 @@ TEST(ColourRuns, EveryVertexTakesTheRunAtItsLengthAlongTheYarn) {
   // run at the first piece's length, not at 0.
   const double at = a_length - f.pieces.back().arc_length.back();
   EXPECT_GT(at, 0.0);
-  EXPECT_EQ(tubes::colour_along(p.yarns[0], at), tubes::colour_along(p.yarns[0], at + 1e-6));
+  const tubes::YarnColours rgb = tubes::yarn_colours(p.yarns[0]);
+  EXPECT_EQ(tubes::colour_along(p.yarns[0], rgb, at), tubes::colour_along(p.yarns[0], rgb, at + 1e-6));
 }
 
 TEST(ColourRuns, WrittenAsCOLOR_0SoAnyReaderShowsThem) {

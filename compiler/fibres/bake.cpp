@@ -160,7 +160,7 @@ BakedYarn bake(const Yarn& yarn, int threads) {
 
   // The fibres' colours (linear): the heather's by share, else white; each fibre's shade.
   std::vector<glm::dvec3> heather;
-  for (const yarn::FibreColour& f : yarn.heather) heather.emplace_back(tubes::linear_rgb(f.color));
+  for (const glm::vec3& c : tubes::yarn_colours(yarn).fibres) heather.emplace_back(c);
   // Eight directions of the sky's horizon, six steps out to most of the radius.
   std::array<glm::dvec2, 8> directions;
   for (int d = 0; d < 8; ++d) directions[d] = {std::cos(two_pi * d / 8), std::sin(two_pi * d / 8)};

@@ -57,10 +57,15 @@ double rest_radius(const yarn::FibreModel& m, Random& r) {
 }
 
 // A frame along a strand at the yarn's length s, interpolated between its samples.
+// A strand's frame at any length along it, and where the strand is pressed flat (its
+// `axes`), how much each of n and b is stretched over the round section's radius.
 struct Along {
   const sweep::Frames& f;
   std::span<const double> arc;
+  std::span<const glm::dvec2> axes = {};  // empty: round
+  double round = 1.0;                      // the round section's radius
   std::size_t j = 0;
+  glm::dvec2 squash{1.0};
   void at(double s, glm::dvec3& origin, glm::dvec3& n, glm::dvec3& b) {
     while (j + 2 < arc.size() && arc[j + 1] < s) ++j;
     while (j > 0 && arc[j] > s) --j;
@@ -69,6 +74,7 @@ struct Along {
     origin = glm::mix(f.origin[j], f.origin[j + 1], t);
     n = glm::normalize(glm::mix(f.normal[j], f.normal[j + 1], t));
     b = glm::normalize(glm::mix(f.binormal[j], f.binormal[j + 1], t));
+    if (!axes.empty()) squash = glm::mix(axes[j], axes[j + 1], t) / round;
   }
 };
 
@@ -107,7 +113,8 @@ void lay(const Yarn& yarn, std::size_t yarn_index, std::size_t piece_index, cons
   if (pl.fibre_points == 0) return;
   const yarn::FibreModel& m = yarn.fibres;
   const double length = p.arc_length.back(), yarn_radius = 0.5 * yarn.diameter;
-  const std::vector<sweep::Strand> plies = sweep::strands(p.frames, p.arc_length, ply_section(yarn));
+  // Pressed where the relaxed yarns press each other, as the tube is (relax/press.hpp).
+  const std::vector<sweep::Strand> plies = sweep::strands(p.frames, p.arc_length, ply_section(yarn), p.pressed);
 
   // The cores: each ply's tube, thinner.
   std::vector<sweep::Strand> cores = plies;
@@ -118,14 +125,14 @@ void lay(const Yarn& yarn, std::size_t yarn_index, std::size_t piece_index, cons
   }
   sweep::append_tubes(cores, p.arc_length, tubes::ring_sides(yarn, sides), out.cores);
   const bool dyed = !yarn.colours.empty(), heathered = !yarn.heather.empty();
+  const tubes::YarnColours rgb = tubes::yarn_colours(yarn);
   if (dyed) {
     out.cores.colors.resize(out.cores.positions.size());
     for (std::size_t v = 0; v < out.cores.positions.size(); ++v)
-      out.cores.colors[v] = tubes::colour_along(yarn, before + static_cast<double>(out.cores.uvs[v].x));
+      out.cores.colors[v] = tubes::colour_along(yarn, rgb, before + static_cast<double>(out.cores.uvs[v].x));
   }
   if (heathered) out.cores.colors.assign(out.cores.positions.size(), tubes::mean_colour(yarn));  // the blend, deep inside
-  std::vector<glm::vec3> fibre_rgb;
-  for (const yarn::FibreColour& c : yarn.heather) fibre_rgb.push_back(tubes::linear_rgb(c.color));
+  const std::vector<glm::vec3>& fibre_rgb = rgb.fibres;
   glm::vec3 fibre_colour{1.0f};  // a heathered yarn's: the fibre being laid's
 
   const std::size_t points = line_points(yarn, pl);
@@ -135,7 +142,7 @@ void lay(const Yarn& yarn, std::size_t yarn_index, std::size_t piece_index, cons
   const auto put = [&](const glm::dvec3& at, double s, bool join) {
     const auto k = static_cast<std::uint32_t>(out.lines.positions.size());
     out.lines.positions.emplace_back(at);
-    if (dyed) out.lines.colors.push_back(tubes::colour_along(yarn, before + s));
+    if (dyed) out.lines.colors.push_back(tubes::colour_along(yarn, rgb, before + s));
     if (heathered) out.lines.colors.push_back(fibre_colour);
     if (join) out.lines.indices.insert(out.lines.indices.end(), {k - 1, k});
   };
@@ -165,7 +172,7 @@ void lay(const Yarn& yarn, std::size_t yarn_index, std::size_t piece_index, cons
       const double theta0 = two_pi * r.uniform(), phase0 = two_pi * r.uniform();
       if (heathered) fibre_colour = fibre_rgb[yarn::fibre_colour_at(yarn.heather, r.uniform())];
       const std::vector<Bulge>& own = bulges[ply * fibres_in_ply + f];
-      Along along{strand.frames, p.arc_length};
+      Along along{strand.frames, p.arc_length, strand.axes, ply_radius};
       for (std::size_t k = 0; k < pl.fibre_points; ++k) {
         const double s = std::min(length, static_cast<double>(k) * step);
         glm::dvec3 o, n, b;
@@ -177,7 +184,7 @@ void lay(const Yarn& yarn, std::size_t yarn_index, std::size_t piece_index, cons
           const double t = (s - g.s) / bulge_length;
           if (t > 0.0 && t < 1.0) radius += g.reach * 0.5 * (1.0 - std::cos(two_pi * t));
         }
-        put(o + radius * (std::cos(theta) * n + std::sin(theta) * b), s, k > 0);
+        put(o + radius * (along.squash.x * std::cos(theta) * n + along.squash.y * std::sin(theta) * b), s, k > 0);
       }
     }
   }

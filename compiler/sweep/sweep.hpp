@@ -78,8 +78,8 @@ struct Strand {
 // per ply. `arc_length` holds the yarn's length in mm at each frame. `pressed`, per frame
 // or empty: the direction the yarn is pressed from, across it, of length 1 - aspect (< 1);
 // there a circle flattens to an ellipse of its area whose minor axis lies along it, the
-// axis kept where the yarn is not pressed (relax/press.hpp). Ellipse and plied sections
-// keep their own shape.
+// axis kept where the yarn is not pressed (relax/press.hpp); a plied section's plies, each
+// kept round, have their centres moved onto that ellipse. An ellipse keeps its own shape.
 std::vector<Strand> strands(const Frames& frames, std::span<const double> arc_length, const CrossSection& section,
                             std::span<const glm::dvec3> pressed = {});
 

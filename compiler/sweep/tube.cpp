@@ -55,8 +55,12 @@ Strand pressed_circle(const Frames& f, double r, std::span<const dvec3> pressed)
 }
 
 // The centre line of ply k of n: a helix about the yarn's centreline at distance
-// `offset`, turning `twist` times per mm in the rotation-minimising frame.
-Frames ply(const Frames& f, std::span<const double> s, int k, int n, double offset, double twist) {
+// `offset`, turning `twist` times per mm in the rotation-minimising frame. Where the yarn
+// is pressed (`squash`, per frame or empty: the round section's pressed frame and its
+// half-axes over the radius, from pressed_circle) the helix is squashed onto that ellipse:
+// the plies spread along the major axis, the twist's phase still the frame's.
+Frames ply(const Frames& f, std::span<const double> s, int k, int n, double offset, double twist, const Strand* squash,
+           double radius) {
   Frames p;
   const std::size_t count = f.size();
   p.origin.resize(count);
@@ -65,7 +69,13 @@ Frames ply(const Frames& f, std::span<const double> s, int k, int n, double offs
   p.binormal.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
     const double phi = 2.0 * std::numbers::pi * (static_cast<double>(k) / n + twist * s[i]);
-    p.origin[i] = f.origin[i] + offset * (std::cos(phi) * f.normal[i] + std::sin(phi) * f.binormal[i]);
+    dvec3 out = offset * (std::cos(phi) * f.normal[i] + std::sin(phi) * f.binormal[i]);
+    if (squash != nullptr) {
+      const Frames& q = squash->frames;
+      const glm::dvec2 scale = squash->axes[i] / radius;
+      out = scale.x * glm::dot(out, q.normal[i]) * q.normal[i] + scale.y * glm::dot(out, q.binormal[i]) * q.binormal[i];
+    }
+    p.origin[i] = f.origin[i] + out;
   }
   for (std::size_t i = 0; i < count; ++i) {
     const std::size_t a = i == 0 ? 0 : i - 1, b = i + 1 == count ? i : i + 1;
@@ -176,8 +186,11 @@ std::vector<Strand> strands(const Frames& f, std::span<const double> s, const Cr
       // n touching circles around the axis: centres at R = r_p / sin(pi / n), R + r_p = r.
       const double gap = std::sin(std::numbers::pi / n);
       const double ply_radius = r / (1.0 + 1.0 / gap), offset = ply_radius / gap;
+      // Pressed, the plies' centres lie on the flattened section's ellipse (each ply stays round).
+      const Strand squash = pressed.empty() ? Strand{} : pressed_circle(f, r, pressed);
       std::vector<Strand> out;
-      for (int k = 0; k < n; ++k) out.push_back({ply(f, s, k, n, offset, section.twist), ply_radius, ply_radius, {}});
+      for (int k = 0; k < n; ++k)
+        out.push_back({ply(f, s, k, n, offset, section.twist, pressed.empty() ? nullptr : &squash, r), ply_radius, ply_radius, {}});
       return out;
     }
   }

@@ -60,9 +60,18 @@ mesh::Mode primitive_mode(View view) {
 
 }  // namespace
 
-glm::vec3 colour_along(const Yarn& yarn, double s) {
-  if (yarn.colours.empty()) return linear_rgb(yarn.color);
-  return linear_rgb(yarn.colours[yarn::run_at(yarn.colours, yarn.colour_start, std::max(0.0, s))].color);
+YarnColours yarn_colours(const Yarn& yarn) {
+  YarnColours c;
+  for (const yarn::ColourRun& r : yarn.colours) c.runs.push_back(linear_rgb(r.color));
+  for (const yarn::FibreColour& f : yarn.heather) c.fibres.push_back(linear_rgb(f.color));
+  c.plain = linear_rgb(yarn.color);
+  return c;
+}
+
+glm::vec3 colour_along(const Yarn& yarn, const YarnColours& c, double s) {
+  assert(c.runs.size() == yarn.colours.size());
+  if (yarn.colours.empty()) return c.plain;
+  return c.runs[yarn::run_at(yarn.colours, yarn.colour_start, std::max(0.0, s))];
 }
 
 std::vector<double> yarn_before(std::span<const curves::CurvePiece> pieces) {
@@ -155,11 +164,8 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
       by_yarn[y].indices.resize(indices[y]);
     }
     const std::vector<double> before = yarn_before(pieces);
-    std::vector<std::vector<glm::vec3>> run_rgb(yarns.size());
-    for (std::size_t y = 0; y < yarns.size(); ++y) {
-      for (const yarn::ColourRun& r : yarns[y].colours) run_rgb[y].push_back(linear_rgb(r.color));
-      for (const yarn::FibreColour& f : yarns[y].heather) run_rgb[y].push_back(linear_rgb(f.color));
-    }
+    std::vector<YarnColours> colours;
+    for (const Yarn& y : yarns) colours.push_back(yarn_colours(y));
     parallel_for(pieces.size(), thread_count(threads), [&](std::size_t i) {
       const curves::CurvePiece& p = pieces[i];
       const Yarn& yarn = yarns[p.path.yarn];
@@ -168,19 +174,17 @@ mesh::Mesh build_mesh(std::span<const Yarn> yarns, std::span<const curves::Curve
       sweep::write_tubes(strands, p.arc_length, ring_sides(yarn, sides), prim, vertex_at[i], index_at[i]);
       if (prim.colors.empty()) return;
       // Each vertex by its length along the yarn (TEXCOORD u, the piece's own).
-      const std::vector<glm::vec3>& rgb = run_rgb[static_cast<std::size_t>(p.path.yarn)];
+      const YarnColours& rgb = colours[static_cast<std::size_t>(p.path.yarn)];
       if (!yarn.heather.empty()) {
         // Heathered: each vertex a fibre colour by its share, drawn from a hash of the piece
         // and the vertex: a fine speckle where the fibres' colours show through each other.
         const std::uint64_t key = hashed::mix(static_cast<std::uint64_t>(i) + 0x4ea7e5ULL);
         for (std::size_t v = vertex_at[i]; v < vertex_end[i]; ++v)
-          prim.colors[v] = rgb[yarn::fibre_colour_at(yarn.heather, hashed::uniform(key, v - vertex_at[i]))];
+          prim.colors[v] = rgb.fibres[yarn::fibre_colour_at(yarn.heather, hashed::uniform(key, v - vertex_at[i]))];
         return;
       }
-      for (std::size_t v = vertex_at[i]; v < vertex_end[i]; ++v) {
-        const double s = std::max(0.0, before[i] + static_cast<double>(prim.uvs[v].x));
-        prim.colors[v] = rgb[yarn::run_at(yarn.colours, yarn.colour_start, s)];
-      }
+      for (std::size_t v = vertex_at[i]; v < vertex_end[i]; ++v)
+        prim.colors[v] = colour_along(yarn, rgb, before[i] + static_cast<double>(prim.uvs[v].x));
     });
     for (auto& prim : by_yarn) {
       if (!prim.indices.empty()) out.primitives.push_back(std::move(prim));

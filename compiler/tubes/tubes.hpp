@@ -41,9 +41,18 @@ std::uint64_t vertex_count(const Yarn& yarn, std::size_t samples, int sides);
 // baseColorFactor wants. The string must be valid: the runtime checks it.
 glm::vec3 linear_rgb(const std::string& hex);
 
-// The linear RGB of a yarn `s` mm from where the knitter started it: its colour, or the
-// run of its dyed sequence there (yarn/colour.hpp).
-glm::vec3 colour_along(const Yarn& yarn, double s);
+// A yarn's colours as linear RGB, each converted once (hot loops colour millions of
+// vertices): its dyed runs', its heather's fibres', and its one colour.
+struct YarnColours {
+  std::vector<glm::vec3> runs;    // one per Yarn::colours
+  std::vector<glm::vec3> fibres;  // one per Yarn::heather
+  glm::vec3 plain{1.0f};          // Yarn::color
+};
+YarnColours yarn_colours(const Yarn& yarn);
+
+// The linear RGB of `yarn` (whose colours are `c`) `s` mm from where the knitter started
+// it: its colour, or the run of its dyed sequence there (yarn/colour.hpp).
+glm::vec3 colour_along(const Yarn& yarn, const YarnColours& c, double s);
 
 // The mm of each piece's yarn before the piece starts: the lengths of that yarn's pieces
 // before it, in working order (pieces go yarn by yarn, each in working order).
