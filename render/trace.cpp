@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <cstring>
 #include <map>
 #include <numbers>
 #include <stdexcept>
@@ -33,6 +34,10 @@ constexpr float key_radiance = 0.80f;
 constexpr float key_radius = 0.14f;  // the disc's angular radius, ~8 degrees: soft shadows
 constexpr float sky_radiance = 0.40f;
 constexpr float sheen_strength = 0.35f;
+// A fibre lets this share of the light that meets it through (keratin and cellulose are
+// translucent): shadow and sky rays, and the camera's, pass a fibre at random this often,
+// so a halo is a haze and fibres shade each other partly, averaged over the samples.
+constexpr float fibre_passes = 0.45f;
 constexpr float half_field_of_view = 10.0f * std::numbers::pi_v<float> / 180.0f;
 
 using hashed::mix;
@@ -69,6 +74,22 @@ struct Scene {
   Scene& operator=(Scene&&) = delete;
 };
 
+// Whether a ray passes the fibre it met: a hash of the ray and the fibre's segment, so the
+// same ray decides the same way whatever the thread or the order Embree meets the hits in.
+void fibre_filter(const RTCFilterFunctionNArguments* args) {
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    std::uint64_t key = RTCHitN_primID(args->hit, args->N, i);
+    for (const float x : {RTCRayN_org_x(args->ray, args->N, i), RTCRayN_org_y(args->ray, args->N, i), RTCRayN_org_z(args->ray, args->N, i),
+                          RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i), RTCRayN_dir_z(args->ray, args->N, i)}) {
+      std::uint32_t bits = 0;
+      std::memcpy(&bits, &x, sizeof bits);
+      key = mix(key ^ bits);
+    }
+    if (hashed::uniform(key, 0) < fibre_passes) args->valid[i] = 0;
+  }
+}
+
 // Each triangle primitive of `primitives` attached to `scene`; returns the primitive of each
 // geometry id.
 // A line primitive's segments as Embree's round linear curves: each segment's two ends
@@ -93,6 +114,8 @@ void attach_fibres(RTCDevice device, RTCScene scene, const mesh::Primitive& p, s
     }
     first[i] = static_cast<unsigned>(2 * i);
   }
+  rtcSetGeometryIntersectFilterFunction(g, fibre_filter);
+  rtcSetGeometryOccludedFilterFunction(g, fibre_filter);
   rtcCommitGeometry(g);
   const unsigned id = rtcAttachGeometry(scene, g);
   rtcReleaseGeometry(g);
@@ -215,13 +238,14 @@ struct Shader {
   glm::vec3 background;
   glm::vec3 key, key_u, key_v;  // world: towards the key light, and the disc's axes
 
-  bool occluded(const glm::vec3& from, const glm::vec3& dir) const {
+  // Whether anything lies along `dir` from `from`, past `near`.
+  bool occluded(const glm::vec3& from, const glm::vec3& dir, float near = 0.0f) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray{};
     ray.org_x = from.x, ray.org_y = from.y, ray.org_z = from.z;
     ray.dir_x = dir.x, ray.dir_y = dir.y, ray.dir_z = dir.z;
-    ray.tnear = 0.0f;
+    ray.tnear = near;
     ray.tfar = inf;
     ray.mask = 0xffffffffu;
     rtcOccluded1(scene, &context, &ray);
@@ -284,10 +308,14 @@ struct Shader {
         if (glm::dot(n, dir) > 0.0f) n = -n;  // toward the viewer, keeping its slant
       }
       if (!p->colors.empty()) albedo *= w * p->colors[i0] + u * p->colors[i1] + v * p->colors[i2];
-    } else if (!p->colors.empty()) {  // a fibre: its segment's two ends
+    }
+    glm::vec3 along{0.0f};  // a fibre's direction
+    if (p->mode != mesh::Mode::triangles) {  // a fibre: its segment's two ends
       const bool strip = p->mode == mesh::Mode::line_strip;
       const std::uint32_t a = p->indices[strip ? prim : 2 * prim], b = p->indices[strip ? prim + 1 : 2 * prim + 1];
-      albedo *= glm::mix(p->colors[a], p->colors[b], rh.hit.u);
+      if (!p->colors.empty()) albedo *= glm::mix(p->colors[a], p->colors[b], rh.hit.u);
+      const glm::vec3 d = p->positions[b] - p->positions[a];
+      if (glm::dot(d, d) > 1e-20f) along = glm::normalize(d);
     }
 
     const glm::vec3 hit = view.eye + rh.ray.tfar * dir;
@@ -300,8 +328,15 @@ struct Shader {
     const float r = key_radius * std::sqrt(uniform(stream, 2)), phi = 2.0f * std::numbers::pi_v<float> * uniform(stream, 3);
     const glm::vec3 to_key = glm::normalize(key + r * std::cos(phi) * key_u + r * std::sin(phi) * key_v);
     float direct = 0.0f;
-    if (const float c = glm::dot(n, to_key); c > 0.0f && glm::dot(ng, to_key) > 0.0f && !occluded(from, to_key))
+    if (along != glm::vec3(0.0f)) {
+      // A thin translucent fibre is lit from any side by how square it lies to the light
+      // (Kajiya and Kay's diffuse term), not by the side of it the camera sees.
+      const float c = glm::dot(along, to_key);
+      // The shadow ray leaves from the fibre's axis, past its own width (the light may lie behind it).
+      if (!occluded(hit, to_key, lift)) direct = key_radiance * std::sqrt(std::max(0.0f, 1.0f - c * c));
+    } else if (const float c = glm::dot(n, to_key); c > 0.0f && glm::dot(ng, to_key) > 0.0f && !occluded(from, to_key)) {
       direct = key_radiance * c;
+    }
 
     // The sky: one cosine-weighted direction about the normal; open sky scores 1.
     const float r2 = std::sqrt(uniform(stream, 4)), phi2 = 2.0f * std::numbers::pi_v<float> * uniform(stream, 5);

@@ -126,6 +126,52 @@ TEST(Traced, YarnInsideAnInterlockIsDarkerThanTheSameYarnInOpenLight) {
   EXPECT_LT(in, 0.92 * out);
 }
 
+// Fibres are translucent: a screen of touching black fibres 3 mm over a sheet lets the
+// sheet show through it, and casts a lighter shadow than a card there would.
+TEST(Traced, FibresLetSomeLightThrough) {
+  const auto scene = [](bool fibres) {
+    mesh::Mesh m;
+    const int grey = material(m, glm::vec3(0.6f)), black = material(m, glm::vec3(0.0f));
+    add_quad(m, grey, -10, -10, 10, 10, 0);
+    if (!fibres) {
+      add_quad(m, black, -2, -2, 2, 2, 3);
+      return m;
+    }
+    mesh::Primitive p;
+    p.material = black;
+    p.mode = mesh::Mode::lines;
+    p.line_radius = 0.05f;
+    for (float y = -2.0f; y <= 2.0f; y += 0.1f) {  // touching: seen square on, the screen is closed
+      p.indices.push_back(static_cast<std::uint32_t>(p.positions.size()));
+      p.positions.push_back({-2.0f, y, 3.0f});
+      p.indices.push_back(static_cast<std::uint32_t>(p.positions.size()));
+      p.positions.push_back({2.0f, y, 3.0f});
+    }
+    m.primitives.push_back(std::move(p));
+    return m;
+  };
+  TraceOptions o;
+  o.width = o.height = 200;
+  o.samples = 64;
+  const mesh::Mesh card = scene(false), screen = scene(true);
+  const Decoded with_card = decode(traced_png(card, o)), with_screen = decode(traced_png(screen, o));
+  const mesh::Bounds box = mesh::bounds(card);
+  const glm::vec2 shadow_at = traced_pixel(box, o, false, {2.5f, -3.2f, 0.0f}), middle = traced_pixel(box, o, false, {0.0f, 0.0f, 3.0f});
+  const double card_shadow = with_card.around(shadow_at), screen_shadow = with_screen.around(shadow_at);
+  const double card_middle = with_card.around(middle), screen_middle = with_screen.around(middle);
+  std::printf("shadow: card %.3f, screen of fibres %.3f; seen through: card %.3f, screen %.3f\n", card_shadow, screen_shadow,
+              card_middle, screen_middle);
+  EXPECT_GT(screen_shadow, card_shadow + 0.05);
+  EXPECT_LT(card_middle, 0.02);    // a black card hides the sheet
+  EXPECT_GT(screen_middle, 0.05);  // the sheet shows through the fibres
+  // Which rays pass is hashed from the ray and the fibre: the same bytes for any thread count.
+  o.samples = 4;
+  o.threads = 1;
+  const std::string one = traced_png(screen, o);
+  o.threads = 2;
+  EXPECT_EQ(one, traced_png(screen, o));
+}
+
 TEST(Traced, TheSameBytesForAnyThreadCountAndSeedDecidesTheNoise) {
   mesh::Mesh m;
   const int yarn = material(m, glm::vec3(0.7f, 0.3f, 0.2f));
