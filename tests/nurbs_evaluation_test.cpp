@@ -401,6 +401,56 @@ TEST(NurbsBezier, TwoAndThreePointsGiveASegmentAndAParabola) {
 }
 
 // ---------------------------------------------------------------------------------------
+// A span made ready once (nurbs::Span): the cubic's power form, anything else by A4.2
+
+TEST(NurbsSpan, AgreesWithTheDerivativesInEverySpanOfEveryKind) {
+  std::mt19937 rng(808);
+  int power = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const bool rational = trial % 4 == 3;
+    const int p = trial % 4 == 2 ? 2 : 3;
+    const Curve c = random_even_curve(rng, p, p + 1 + std::uniform_int_distribution<int>(0, 9)(rng), rational);
+    double scale[4] = {0, 0, 0, 0};
+    for (const auto& [a, b] : spans_of(c))
+      for (int k = 0; k <= 3; ++k) scale[k] = std::max(scale[k], glm::length(nurbs::derivatives(c, a, 3)[static_cast<std::size_t>(k)]));
+    for (const auto& [a, b] : spans_of(c)) {
+      const nurbs::Span span(c, nurbs::find_span(c, a));
+      EXPECT_TRUE(span.holds(a));
+      EXPECT_FALSE(span.holds(b));
+      power += p == 3 && !rational;
+      // Both ends of the span and inside it: the span's polynomial holds on its closed interval.
+      for (const double t : {0.0, 0.07, 0.5, 0.93, 1.0}) {
+        const double u = a + t * (b - a);
+        const auto want = nurbs::derivatives(c, span.index(), u, 3);
+        const auto got = span.derivatives(u, 3);
+        for (int k = 0; k <= 3; ++k)
+          EXPECT_LE(glm::length(got[static_cast<std::size_t>(k)] - want[static_cast<std::size_t>(k)]), 1e-12 * std::max(1.0, scale[k]))
+              << "degree " << p << (rational ? " rational" : "") << ", u " << u << ", derivative " << k;
+        EXPECT_NEAR(span.speed(u), glm::length(want[1]), 1e-12 * std::max(1.0, scale[1]));
+        EXPECT_NEAR(span.curvature(u), nurbs::curvature(c, span.index(), u), 1e-9 * std::max(1.0, nurbs::curvature(c, span.index(), u)));
+      }
+    }
+  }
+  EXPECT_GT(power, 100);  // the power form itself was checked, not only the fallback
+}
+
+TEST(NurbsMeasure, SegmentLengthsAreEachStepsSegmentLength) {
+  std::mt19937 rng(909);
+  const Curve c = random_even_curve(rng, 3, 12, false);
+  // Steps within one span, across one knot, across several, and of zero length.
+  std::vector<double> u = {0.0, 0.01, 0.02, 0.02, 0.3, 0.31, 0.8, 0.95, 1.0};
+  std::vector<double> lengths(u.size() - 1);
+  nurbs::segment_lengths(c, u, lengths);
+  for (std::size_t i = 0; i + 1 < u.size(); ++i) {
+    EXPECT_NEAR(lengths[i], nurbs::segment_length(c, u[i], u[i + 1]), 1e-13) << i;
+    // (One rule a knot span: close to the adaptive length on the short steps sampling makes.)
+    if (u[i + 1] - u[i] <= 0.02) {
+      EXPECT_NEAR(lengths[i], nurbs::arc_length(c, u[i], u[i + 1]), 1e-9) << i;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------
 // Rational curves: circles
 
 TEST(NurbsRational, QuarterCircleLiesOnTheUnitCircleWithUnitCurvature) {

@@ -51,10 +51,15 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
   for (std::size_t j = 0; j < piece.path.loops.size(); ++j)
     piece.loop_samples.emplace_back(sample_at[piece.path.loop_first[j]], sample_at[piece.path.loop_last[j]]);
   piece.frames = sweep::frames(piece.curve.curve, piece.samples, options.frames, threads);
-  // Each step's length in parallel, then summed in order.
+  // Each step's length in parallel (blocks of steps, each walking its knot spans), then
+  // summed in order.
   std::vector<double> step(piece.samples.size(), 0.0);
-  parallel_for(piece.samples.size() - 1, threads, [&](std::size_t i) {
-    step[i + 1] = nurbs::segment_length(piece.curve.curve, piece.samples[i], piece.samples[i + 1]);
+  constexpr std::size_t block = 1024;
+  const std::size_t steps = piece.samples.size() - 1;
+  parallel_for((steps + block - 1) / block, threads, [&](std::size_t b) {
+    const std::size_t from = b * block, to = std::min(steps, from + block);
+    nurbs::segment_lengths(piece.curve.curve, std::span<const double>(piece.samples).subspan(from, to - from + 1),
+                           std::span<double>(step).subspan(from + 1, to - from));
   });
   piece.arc_length.assign(piece.samples.size(), 0.0);
   for (std::size_t i = 1; i < piece.samples.size(); ++i) piece.arc_length[i] = piece.arc_length[i - 1] + step[i];

@@ -172,4 +172,29 @@ std::array<Point, max_order + 1> derivatives(const Curve& c, int span, double u,
 
 Point evaluate(const Curve& c, double u) { return derivatives(c, u, 0)[0]; }
 
+Span::Span(const Curve& c, int span) : curve_(&c), span_(span) {
+  assert(span >= c.degree && static_cast<std::size_t>(span) + 1 < c.knots.size());
+  if (c.degree != 3 || !c.weights.empty()) return;
+  // The Taylor coefficients at the span's first knot: C^(k)(a) / k!.
+  start_ = c.knots[static_cast<std::size_t>(span)];
+  const auto d = cubic_derivatives(c, span, start_, 3);
+  c_[0] = d[0];
+  c_[1] = d[1];
+  c_[2] = 0.5 * d[2];
+  c_[3] = (1.0 / 6.0) * d[3];
+  power_ = true;
+}
+
+std::array<Point, max_order + 1> Span::derivatives(double u, int order) const {
+  assert(order >= 0 && order <= max_order);
+  if (!power_) return nurbs::derivatives(*curve_, span_, u, order);
+  const double t = u - start_;
+  std::array<Point, max_order + 1> d{};
+  d[0] = c_[0] + t * (c_[1] + t * (c_[2] + t * c_[3]));
+  if (order >= 1) d[1] = c_[1] + t * (2.0 * c_[2] + t * (3.0 * c_[3]));
+  if (order >= 2) d[2] = 2.0 * c_[2] + t * (6.0 * c_[3]);
+  if (order >= 3) d[3] = 6.0 * c_[3];
+  return d;
+}
+
 }  // namespace knitc::nurbs

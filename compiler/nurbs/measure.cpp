@@ -1,7 +1,9 @@
 // Differential measures of a curve: curvature, torsion and arc length.
 #include "nurbs.hpp"
 
+#include <cassert>
 #include <cmath>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -11,6 +13,15 @@ double curvature(const Curve& c, double u) { return curvature(c, find_span(c, u)
 
 double curvature(const Curve& c, int span, double u) {
   const auto d = derivatives(c, span, u, 2);
+  const double speed = glm::length(d[1]);
+  if (speed == 0.0) return 0.0;
+  return glm::length(glm::cross(d[1], d[2])) / (speed * speed * speed);
+}
+
+double Span::speed(double u) const { return glm::length(derivatives(u, 1)[1]); }
+
+double Span::curvature(double u) const {
+  const auto d = derivatives(u, 2);
   const double speed = glm::length(d[1]);
   if (speed == 0.0) return 0.0;
   return glm::length(glm::cross(d[1], d[2])) / (speed * speed * speed);
@@ -53,25 +64,44 @@ double adaptive(const Curve& c, double a, double b, double whole, int depth) {
 
 }  // namespace
 
-double segment_length(const Curve& c, double u0, double u1) {
+namespace {
+
+// The 5-point Gauss-Legendre rule over [a, b] inside one knot span, whose Span is kept in
+// `span` from call to call (made anew when the rule leaves it).
+double span_rule(const Curve& c, std::optional<Span>& span, double a, double b) {
   constexpr double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
   constexpr double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
                            0.2369268850561891};
-  auto rule = [&](double a, double b) {
-    const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
-    const int span = find_span(c, mid);  // the rule's points lie inside one knot span
-    double sum = 0.0;
-    for (int i = 0; i < 5; ++i) sum += w[i] * glm::length(derivatives(c, span, mid + half * x[i], 1)[1]);
-    return sum * half;
-  };
+  const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+  if (!span || !span->holds(mid)) span.emplace(c, find_span(c, mid));  // the rule's points lie inside one knot span
+  double sum = 0.0;
+  for (int i = 0; i < 5; ++i) sum += w[i] * span->speed(mid + half * x[i]);
+  return sum * half;
+}
+
+double segment_length(const Curve& c, std::optional<Span>& span, double u0, double u1) {
+  if (span && span->holds(u0) && u1 <= c.knots[static_cast<std::size_t>(span->index()) + 1]) return span_rule(c, span, u0, u1);
   // The speed is only C^(p-1) across a knot: one rule per knot span.
   double total = 0.0, a = u0;
   for (std::size_t i = static_cast<std::size_t>(find_span(c, u0)) + 1; i < c.knots.size() && c.knots[i] < u1; ++i) {
     if (c.knots[i] <= a) continue;
-    total += rule(a, c.knots[i]);
+    total += span_rule(c, span, a, c.knots[i]);
     a = c.knots[i];
   }
-  return total + rule(a, u1);
+  return total + span_rule(c, span, a, u1);
+}
+
+}  // namespace
+
+double segment_length(const Curve& c, double u0, double u1) {
+  std::optional<Span> span;
+  return segment_length(c, span, u0, u1);
+}
+
+void segment_lengths(const Curve& c, std::span<const double> u, std::span<double> out) {
+  assert(out.size() + 1 == u.size());
+  std::optional<Span> span;
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = segment_length(c, span, u[i], u[i + 1]);
 }
 
 double arc_length(const Curve& c, double u0, double u1) {

@@ -48,6 +48,34 @@ std::array<Point, max_order + 1> derivatives(const Curve& curve, double u, int o
 std::array<Point, max_order + 1> derivatives(const Curve& curve, int span, double u, int order);
 Point evaluate(const Curve& curve, double u);
 
+// One knot span of a curve, made once and evaluated many times (sampling, lengths,
+// frames evaluate a dozen points a span): a non-rational cubic's span, knitc's every
+// curve, is turned into power form about its first knot, C(a + t) = c0 + c1 t + c2 t^2
+// + c3 t^3, so a point and its derivatives cost a few multiply-adds instead of the basis
+// functions' recurrence; any other curve's span is evaluated by derivatives(). u in the
+// span [knots[span], knots[span + 1]] as for derivatives(curve, span, u, order); agrees
+// with it to rounding. Keeps a reference to the curve.
+class Span {
+ public:
+  Span(const Curve& curve, int span);
+  int index() const { return span_; }
+  // Whether u is in [knots[span], knots[span + 1]): find_span's span for it (but at the
+  // domain's very end).
+  bool holds(double u) const {
+    return curve_->knots[static_cast<std::size_t>(span_)] <= u && u < curve_->knots[static_cast<std::size_t>(span_) + 1];
+  }
+  std::array<Point, max_order + 1> derivatives(double u, int order) const;
+  double speed(double u) const;      // |C'(u)|
+  double curvature(double u) const;  // as curvature(curve, span, u)
+
+ private:
+  const Curve* curve_;
+  int span_;
+  bool power_ = false;
+  double start_ = 0.0;
+  Point c_[4] = {};
+};
+
 // Curvature |C' x C''| / |C'|^3, in 1/length. Zero where C' vanishes.
 double curvature(const Curve& curve, double u);
 double curvature(const Curve& curve, int span, double u);  // span: find_span(curve, u)
@@ -62,6 +90,9 @@ double arc_length(const Curve& curve, double u0, double u1);
 // samples it agrees with arc_length to the snapshots' 0.001 mm over a whole fabric, at a
 // fraction of the cost.
 double segment_length(const Curve& curve, double u0, double u1);
+// segment_length of every step of ascending parameters u: out[i] for [u[i], u[i + 1]]
+// (out.size() == u.size() - 1), the same rule, each knot span made ready once.
+void segment_lengths(const Curve& curve, std::span<const double> u, std::span<double> out);
 
 enum class Parametrisation {
   chord_length,  // parameter steps proportional to |Q_k - Q_{k-1}| (P&T eq. 9.5)

@@ -1,5 +1,6 @@
 #include <cassert>
 #include <cmath>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -63,11 +64,17 @@ Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind ki
   f.normal.resize(count);
   f.binormal.resize(count);
   if (kind == FrameKind::rotation_minimising) {
-    // Points and tangents need only the curve: evaluated in parallel.
-    parallel_for(count, thread_count(threads), [&](std::size_t i) {
-      const auto d = nurbs::derivatives(curve, u[i], 1);
-      f.origin[i] = d[0];
-      f.tangent[i] = glm::normalize(d[1]);
+    // Points and tangents need only the curve: evaluated in parallel, by blocks of
+    // samples, each walking its knot spans (the samples ascend).
+    constexpr std::size_t block = 1024;
+    parallel_for((count + block - 1) / block, thread_count(threads), [&](std::size_t b) {
+      std::optional<nurbs::Span> span;
+      for (std::size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
+        if (!span || !span->holds(u[i])) span.emplace(curve, nurbs::find_span(curve, u[i]));
+        const auto d = span->derivatives(u[i], 1);
+        f.origin[i] = d[0];
+        f.tangent[i] = glm::normalize(d[1]);
+      }
     });
   }
   for (std::size_t i = 0; i < count && kind == FrameKind::frenet; ++i) {

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -17,11 +18,10 @@ struct Cell {
 // 3-point Gauss-Legendre estimate of arc length over [a, b]; cells are short and the
 // estimate only sets sample density.
 // span: the knot span holding [a, b).
-double cell_length(const nurbs::Curve& c, int span, double a, double b) {
+double cell_length(const nurbs::Span& span, double a, double b) {
   constexpr double x = 0.7745966692414834, w0 = 8.0 / 9.0, w1 = 5.0 / 9.0;
   const double h = 0.5 * (b - a), m = 0.5 * (a + b);
-  auto speed = [&](double u) { return glm::length(nurbs::derivatives(c, span, u, 1)[1]); };
-  return h * (w1 * speed(m - h * x) + w0 * speed(m) + w1 * speed(m + h * x));
+  return h * (w1 * span.speed(m - h * x) + w0 * span.speed(m) + w1 * span.speed(m + h * x));
 }
 
 }  // namespace
@@ -32,26 +32,32 @@ std::vector<double> sample_parameters(const nurbs::Curve& c, double u0, double u
   constexpr double max_samples = 1 << 22;  // a guard, far above any sane tolerance
   std::vector<Cell> cells;
   double a = u0;
-  // A cell's end is the next one's start: its curvature is kept, not evaluated again.
+  // A cell's end is the next one's start: its curvature is kept, not evaluated again
+  // (the curvature is continuous across a knot: the span's end is the next's start).
   double last_u = NAN, last_k = 0.0;
-  auto curvature = [&](double u) {
+  auto curvature = [&](const nurbs::Span& span, double u) {
     if (u != last_u) {
       last_u = u;
-      last_k = nurbs::curvature(c, u);
+      last_k = span.curvature(u);
     }
     return last_k;
   };
+  // [a, b) lies in one knot span, each after the last: found by walking, as find_span would.
+  int at = nurbs::find_span(c, a);
+  const int last_span = static_cast<int>(c.points.size()) - 1;
   auto add_span = [&](double b) {
-    const int span = nurbs::find_span(c, a);  // [a, b) lies in one knot span; b may start the next
+    while (at < last_span && c.knots[static_cast<std::size_t>(at) + 1] <= a) ++at;
+    assert(at == nurbs::find_span(c, a));
+    const nurbs::Span span(c, at);
     for (int i = 0; i < cells_per_span; ++i) {
       const double ca = a + (b - a) * i / cells_per_span;
       const double cb = i + 1 == cells_per_span ? b : a + (b - a) * (i + 1) / cells_per_span;
-      double k = std::max(0.0, curvature(ca));
-      k = std::max(k, nurbs::curvature(c, span, 0.5 * (ca + cb)));
-      k = std::max(k, curvature(cb));
+      double k = std::max(0.0, curvature(span, ca));
+      k = std::max(k, span.curvature(0.5 * (ca + cb)));
+      k = std::max(k, curvature(span, cb));
       const double outer = k * (1.0 + radius * k);  // sagitta factor of the outer fibre
       const double step = outer > 0.0 ? std::sqrt(8.0 * tolerance / outer) : INFINITY;
-      cells.push_back({ca, cb, cell_length(c, span, ca, cb) / std::min(step, max_step)});
+      cells.push_back({ca, cb, cell_length(span, ca, cb) / std::min(step, max_step)});
     }
     a = b;
   };
