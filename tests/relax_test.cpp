@@ -12,6 +12,7 @@
 #include "measure/crossings.hpp"
 #include "measure/measure.hpp"
 #include "relax/contacts.hpp"
+#include "relax/press.hpp"
 #include "relax/relax.hpp"
 #include "relax/repeat.hpp"
 #include "support.hpp"
@@ -262,6 +263,29 @@ TEST(Repeat, TiledSwatchClearsAndTakesTheTilesShape) {
   const auto a = measure::loop_shape(by_repeat.layout, by_repeat.pieces);
   ASSERT_GT(periodic.relaxation.period.x, 0.0);
   EXPECT_NEAR(a.wale_pitch, periodic.relaxation.period.x / 4.0, 0.03 * a.wale_pitch);
+}
+
+// The held interior's pressing is found once per tile point and copied to its other
+// copies (Relaxed::same_as): the same as pressing every point, and most were copied.
+TEST(Repeat, TheInteriorsCopiesArePressedAsIfEachWerePressed) {
+  const Pattern pattern = test::jersey(30, 36);
+  const auto [layout, chains, out] = relaxed_jersey(30, 36, relax::Boundary::free);
+  ASSERT_GT(out.stats.repeat_wales, 0);
+  std::size_t points = 0, copies = 0;
+  for (const auto& piece : out.pieces) points += piece.data_points.size();
+  ASSERT_EQ(out.same_as.size(), points);
+  for (std::size_t i = 0; i < points; ++i) copies += out.same_as[i] != i ? 1 : 0;
+  EXPECT_GT(copies, points / 5) << "copies of " << points << " points";
+  auto each = out.pieces;
+  relax::press(each, sizes(pattern), 2);
+  double worst = 0.0, most = 0.0;
+  for (std::size_t i = 0; i < each.size(); ++i)
+    for (std::size_t k = 0; k < each[i].pressed.size(); ++k) {
+      worst = std::max(worst, glm::distance(each[i].pressed[k], out.pieces[i].pressed[k]));
+      most = std::max(most, glm::length(each[i].pressed[k]));
+    }
+  EXPECT_GT(most, 0.05) << "the yarns press somewhere";
+  EXPECT_LE(worst, 1e-9);  // (1.9e-13 here: the copies lie on the tile to rounding)
 }
 
 TEST(Relax, ClosestPointsOfSegments) {

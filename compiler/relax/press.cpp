@@ -1,6 +1,7 @@
 #include "relax/press.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -52,9 +53,12 @@ glm::dvec3 tangent(const Points& p, std::size_t k, std::size_t from, std::size_t
 
 }  // namespace
 
-void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes, int threads) {
+void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes, int threads,
+           const std::vector<std::uint32_t>& same_as) {
   const Points p = points_of(pieces, sizes);
   const std::size_t n = p.pos.size();
+  assert(same_as.empty() || same_as.size() == n);
+  auto own = [&](std::size_t i) { return same_as.empty() || same_as[i] == i; };
   std::vector<glm::dvec3> pressed(n, glm::dvec3(0.0));
   double thickest = 0.0, longest = 0.0;
   for (std::size_t i = 0; i < n; ++i) thickest = std::max(thickest, 2.0 * p.free_r(i));
@@ -71,6 +75,7 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     constexpr std::size_t block = 4096;
     parallel_for((n + block - 1) / block, thread_count(threads), [&](std::size_t b) {
       for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
+        if (!own(i)) continue;
         const std::size_t from = p.first[p.piece[i]], to = p.first[p.piece[i] + 1];
         double deepest = 0.0;
         glm::dvec3 normal(0.0);
@@ -103,6 +108,8 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
         pressed[i] = (1.0 - aspect) * across / l;
       }
     });
+    for (std::size_t i = 0; i < n; ++i)
+      if (!own(i)) pressed[i] = pressed[same_as[i]];
   }
   // An ellipse is the same turned half a turn: each piece's directions turned to agree
   // with the last pressed one before it, then smoothed along the piece.

@@ -4,6 +4,7 @@
 // relaxation's output: relax() fills yarn_paths::Piece::pressed.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "yarn/size.hpp"
@@ -23,6 +24,10 @@ inline constexpr double flattest_aspect = 0.6;
 // passes of 1-2-1), so the section varies smoothly. Contacts are as the relaxation's:
 // other pieces, or the same one more than 1.8 free diameters along it. sizes: per
 // Pattern::yarns; threads >= 1, the result the same for any count. Linear in the points.
-void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes, int threads);
+// same_as: empty, or per point (the pieces' points in order) the point whose surroundings
+// are this one's moved (a tiled interior's, Relaxed::same_as): only those equal to their
+// own index are pressed, the rest take their pressing.
+void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes, int threads,
+           const std::vector<std::uint32_t>& same_as = {});
 
 }  // namespace knitc::relax

@@ -242,7 +242,7 @@ Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> piece
     return relax_chains(layout, std::move(pieces), sizes, options, nullptr);
   };
   Relaxed out = relaxed();
-  press(out.pieces, sizes, thread_count(options.threads));
+  press(out.pieces, sizes, thread_count(options.threads), out.same_as);
   return out;
 }
 

@@ -24,6 +24,7 @@
 // fabric, and the sweeps hardly grow with it (docs/relaxation.md).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -90,6 +91,12 @@ struct Stats {
 struct Relaxed {
   std::vector<yarn_paths::Piece> pieces;
   Stats stats;
+  // Relaxed by repeat: per point (the pieces' points in order) the point whose
+  // surroundings are this one's moved by a whole number of tiles (a point of the held
+  // interior far from anything the edges' relaxation moved: one of its tile point's
+  // copies), or its own index; empty when relaxed whole. What depends only on a point's
+  // surroundings (pressing) is found once per tile point.
+  std::vector<std::uint32_t> same_as;
 };
 
 // The pieces with points inserted on each piece's interpolating curve (chord-length

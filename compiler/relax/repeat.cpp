@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -136,6 +137,7 @@ struct Crop {
   std::vector<yarn_paths::Piece> pieces;
   std::vector<std::pair<std::size_t, std::size_t>> origin;  // per run: piece, first point
   Start start;
+  std::vector<std::uint8_t> needed;  // per point of the fabric: 1 free, 2 held within reach of a free one, 0 neither
 };
 
 Crop crop(const std::vector<yarn_paths::Piece>& chains, const Start& start, double reach) {
@@ -156,6 +158,7 @@ Crop crop(const std::vector<yarn_paths::Piece>& chains, const Start& start, doub
     });
   }
   Crop out;
+  out.needed = needed;
   constexpr std::size_t stencil = 4;  // points either way along the yarn
   for (std::size_t i = 0; i < chains.size(); ++i) {
     const auto& piece = chains[i];
@@ -375,10 +378,17 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // loop's; the others' are blended along their yarn between the nearest tiled points.
   std::vector<std::vector<glm::dvec3>> local(chains.size());
   std::vector<std::vector<std::uint8_t>> tiled(chains.size());
+  // Per tiled point, its tile point (the tile's pieces' points in order).
+  constexpr std::uint32_t none = UINT32_MAX;
+  std::vector<std::vector<std::uint32_t>> tile_point(chains.size());
+  std::vector<std::uint32_t> tile_first(tile_pieces.size() + 1, 0);
+  for (std::size_t t = 0; t < tile_pieces.size(); ++t)
+    tile_first[t + 1] = tile_first[t] + static_cast<std::uint32_t>(tile_pieces[t].data_points.size());
   std::vector<std::uint8_t> loop_tiled(layout.loops.size(), 0);
   for (std::size_t i = 0; i < chains.size(); ++i) {
     local[i].assign(chains[i].data_points.size(), glm::dvec3(0.0));
     tiled[i].assign(chains[i].data_points.size(), 0);
+    tile_point[i].assign(chains[i].data_points.size(), none);
   }
   // The loop the tile has in each loop's place, and whether it is laid out as that one.
   auto tile_place = [&](const layout::Loop& loop) {
@@ -439,6 +449,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
       const glm::dvec3& at = rest_run.data_points[tf + k];
       local[static_cast<std::size_t>(pi)][f + k] = relaxed_run.data_points[tf + k] - at - affine(at);
       tiled[static_cast<std::size_t>(pi)][f + k] = 1;
+      tile_point[static_cast<std::size_t>(pi)][f + k] = tile_first[tp] + static_cast<std::uint32_t>(tf + k);
     }
     loop_tiled[l] = 1;
   }
@@ -550,6 +561,22 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
       now += glm::distance(out.pieces[i].data_points[k - 1], out.pieces[i].data_points[k]);
     }
     if (laid > 0.0) out.stats.length_change = std::max(out.stats.length_change, std::abs(now / laid - 1.0));
+  }
+  // A held point that nothing free comes near (the crop's reach, three diameters: past
+  // any contact's and pressing's) has its tile point's surroundings, as every other such
+  // copy of it has: the first copy stands for them all.
+  {
+    std::vector<std::uint32_t> first_copy(tile_first.back(), none);
+    out.same_as.resize(start.pos.size());
+    std::size_t at = 0;
+    for (std::size_t i = 0; i < chains.size(); ++i)
+      for (std::size_t k = 0; k < chains[i].data_points.size(); ++k, ++at) {
+        out.same_as[at] = static_cast<std::uint32_t>(at);
+        const std::uint32_t t = tile_point[i][k];
+        if (t == none || !start.held[at] || part.needed[at] != 0) continue;
+        if (first_copy[t] == none) first_copy[t] = static_cast<std::uint32_t>(at);
+        out.same_as[at] = first_copy[t];
+      }
   }
   out.stats.repeat_wales = repeat.wales;
   out.stats.repeat_courses = repeat.courses;
