@@ -81,9 +81,12 @@ int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 // The tile's shape is trusted where a loop's neighbourhood is laid out as its tile
 // loop's; where two held stretches of yarn still pass into each other (a loop laid out as
 // its tile loop whose neighbours along the yarn are not), both are freed, a loop's length
-// of yarn either way, for the edges' relaxation to clear.
+// of yarn either way, for the edges' relaxation to clear. Only near what is not held can
+// that be: the held points each a copy of its tile point, among copies, lie as the tile's
+// (relaxed apart) do. So the points looked from are `look_from`'s, and the points looked
+// at `look_at`'s (a wider band: the held points close to the first).
 void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes, Start& start,
-                             int threads) {
+                             const std::vector<std::uint8_t>& look_from, const std::vector<std::uint8_t>& look_at, int threads) {
   std::vector<double> core, along;
   std::vector<std::uint32_t> piece;
   double thickest = 0.0;
@@ -101,13 +104,13 @@ void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const
   if (thickest <= 0.0) return;
   spatial::Columns grid(thickest);
   for (std::size_t i = 0; i < start.pos.size(); ++i)
-    if (start.held[i]) grid.add(grid.cell_of(start.pos[i]), static_cast<std::uint32_t>(i));
+    if (start.held[i] && look_at[i]) grid.add(grid.cell_of(start.pos[i]), static_cast<std::uint32_t>(i));
   grid.index();
   const std::size_t n = start.pos.size(), block = 4096, blocks = (n + block - 1) / block;
   std::vector<std::vector<std::uint32_t>> overlapping(blocks);
   parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
     for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
-      if (!start.held[i]) continue;
+      if (!start.held[i] || !look_from[i]) continue;
       grid.near(grid.cell_of(start.pos[i]), [&](const spatial::Columns::Entry& e) {
         const std::size_t j = e.item;
         if (j <= i) return;
@@ -489,15 +492,60 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
       }
     loop_held[l] = inside ? 1 : 0;
   }
+  // Per loop, how many loops (across or up, at most `far`) the nearest loop not held is
+  // (or a place with no loop): a distance transform, along the courses, then up.
+  constexpr int far = edge_band + 3;
+  std::vector<std::uint8_t> to_free(layout.loops.size(), far);
+  {
+    const int C = g.courses, W = g.wales;
+    auto at = [&](int c, int w) { return static_cast<std::size_t>(c) * static_cast<std::size_t>(W) + static_cast<std::size_t>(w); };
+    std::vector<int> along(static_cast<std::size_t>(C) * static_cast<std::size_t>(W));
+    for (int c = 0; c < C; ++c) {
+      for (int w = 0; w < W; ++w) {
+        const long l = g(c, w);
+        along[at(c, w)] = l < 0 || !loop_held[static_cast<std::size_t>(l)] ? 0 : std::min(far, w > 0 ? along[at(c, w - 1)] + 1 : 1);
+      }
+      for (int w = W - 1; w >= 0; --w) along[at(c, w)] = std::min(along[at(c, w)], w + 1 < W ? along[at(c, w + 1)] + 1 : 1);
+    }
+    for (int c = 0; c < C; ++c)
+      for (int w = 0; w < W; ++w) {
+        const long l = g(c, w);
+        if (l < 0) continue;
+        int d = far;
+        for (int dc = -far; dc <= far; ++dc) {
+          const int cc = c + dc;
+          d = std::min(d, cc < 0 || cc >= C ? std::abs(dc) : std::max(std::abs(dc), along[at(cc, w)]));
+        }
+        to_free[static_cast<std::size_t>(l)] = static_cast<std::uint8_t>(d);
+      }
+  }
   Start start;
+  std::vector<std::uint8_t> scan_from, scan_at;  // per point: within edge_band + 1 loops of one not held; within far
   for (std::size_t i = 0; i < chains.size(); ++i) {
     const auto& piece = chains[i];
     std::vector<std::uint8_t> held(piece.data_points.size(), 0), on_loop(piece.data_points.size(), 0);
+    std::vector<std::uint8_t> loops_to_free(piece.data_points.size(), 0);  // 0 where between loops
     for (std::size_t j = 0; j < piece.loops.size(); ++j)
       for (std::size_t k = piece.loop_first[j]; k <= piece.loop_last[j]; ++k) {
         on_loop[k] = 1;
         held[k] = loop_held[static_cast<std::size_t>(piece.loops[j])];
+        loops_to_free[k] = to_free[static_cast<std::size_t>(piece.loops[j])];
       }
+    // Between two loops, the nearer of the two's; a tail, 0.
+    {
+      long last_on = -1;
+      for (std::size_t k = 0; k <= held.size(); ++k) {
+        if (k < held.size() && !on_loop[k]) continue;
+        const std::uint8_t here = k < held.size() ? loops_to_free[k] : 0;
+        const std::uint8_t there = last_on >= 0 ? loops_to_free[static_cast<std::size_t>(last_on)] : 0;
+        for (std::size_t u = static_cast<std::size_t>(last_on + 1); u < k; ++u) loops_to_free[u] = std::min(here, there);
+        last_on = static_cast<long>(k);
+      }
+    }
+    for (const std::uint8_t d : loops_to_free) {
+      scan_from.push_back(d <= edge_band + 1 ? 1 : 0);
+      scan_at.push_back(d < far ? 1 : 0);
+    }
     long last_on = -1;  // the last point on a loop, and whether it was held
     for (std::size_t k = 0; k < held.size(); ++k) {
       if (on_loop[k]) {
@@ -513,7 +561,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
     }
   }
 
-  free_where_held_overlap(chains, sizes, start, options.threads);
+  free_where_held_overlap(chains, sizes, start, scan_from, scan_at, options.threads);
   // Tiling jumps the yarn to where the tile put it, with no sweep between to keep its
   // crossings: it must not leave the yarns deeper into each other than the layout did
   // (pushed back out, a deep overlap may come out on the wrong side). Where it would (the
