@@ -167,12 +167,24 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     // The relaxation checked by its result: did any yarn come out on the other side of
     // another (docs/relaxation.md)? Tiling jumps the yarn to the tile's places with no
     // sweep between to keep its crossings; where that passed a yarn through another, the
-    // fabric is relaxed whole as well, and the whole one kept if it passed fewer.
+    // fabric is relaxed again with its edges' bands whole (not as strips) and then whole,
+    // and the one that passed fewer kept.
     if (fabric.layout.knitting == Knitting::flat) {
       double thickest = 0.0;
       for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
       fabric.crossings = measure::relaxation_changes(laid, relaxed.pieces, thickest, options.threads);
       fabric.crossings_checked = true;
+      // (Strips first: the bands relaxed whole, by the same repeat.)
+      if (relaxed.stats.strips > 0 && measure::passed_through(fabric.crossings) > 0) {
+        relax::Options band_options = ro;
+        band_options.by_strips = false;
+        auto banded = relax::relax(fabric.layout, laid, sizes, band_options);
+        auto banded_crossings = measure::relaxation_changes(laid, banded.pieces, thickest, options.threads);
+        if (measure::passed_through(banded_crossings) < measure::passed_through(fabric.crossings)) {
+          relaxed = std::move(banded);
+          fabric.crossings = banded_crossings;
+        }
+      }
       if (relaxed.stats.repeat_wales > 0 && measure::passed_through(fabric.crossings) > 0) {
         relax::Options whole_options = ro;
         whole_options.by_repeat = false;

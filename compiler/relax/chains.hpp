@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "relax/relax.hpp"
@@ -51,6 +52,9 @@ struct Start {
   std::vector<glm::dvec3> pos;
   std::vector<std::uint8_t> held;
   std::vector<Image> images;
+  // A block of a fabric periodic along an edge (a strip, relax/strips.hpp): its contacts
+  // wrap this far in x or y (mm; 0: not that way), and its held points keep the period.
+  glm::dvec2 period{0.0};
 };
 
 // The sweeps on the chains of `pieces` (see relax.hpp), from the layout or from `start`.

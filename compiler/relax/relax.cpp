@@ -274,14 +274,15 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
     if (layout.knitting == Knitting::flat)
       period = glm::dvec2(layout.wales * layout.loop_width, layout.courses * layout.course_spacing);
   }
+  if (start && (start->period.x > 0.0 || start->period.y > 0.0)) period = start->period;
   const int threads = thread_count(options.threads);
   Contacts contacts(period, contact_margin * c.thickest, layout.knitting == Knitting::round, threads);
   Size size;
   size.round = layout.knitting == Knitting::round;
   // Held edges keep the swatch's size, and a held interior (a tiled repeat's) keeps it too.
   size.free_width = size.free_height = options.boundary != Boundary::held && !held_interior;
-  size.periodic_width = period.x > 0.0;
-  size.periodic_height = period.y > 0.0;
+  size.periodic_width = period.x > 0.0 && !held_interior;
+  size.periodic_height = period.y > 0.0 && !held_interior;
   // About the number of loops between the swatch's middle and its edges, times a gain.
   size.most = size_gain * glm::dvec2(layout.wales, layout.courses);
   size.boost = glm::dvec2(1.0);

@@ -53,6 +53,10 @@ struct Options {
   // Free edges on flat work with a repeat (repeat.hpp): relax the repeat alone, periodic,
   // tile it across the fabric, then relax the edges and what does not repeat against it.
   bool by_repeat = true;
+  // By repeat, where the edges' bands form a frame round the held interior: each band
+  // relaxed as one period of a strip periodic along its edge and copied along it, only the
+  // corners relaxed against the copies (strips.hpp); off: the bands relaxed whole.
+  bool by_strips = true;
 };
 
 // The constants of the method, in diameters or radii.
@@ -86,6 +90,11 @@ struct Stats {
   int repeat_wales = 0, repeat_courses = 0, repeat_iterations = 0;
   int repeat_wale0 = 0, repeat_course0 = 0;  // the tile's first loop in the fabric
   double held_share = 0.0;
+  // Of the edges: the bands relaxed as strips periodic along them (0 to 4), the most
+  // sweeps one took, and the share of the yarn's points they placed (the rest of the
+  // edges, the corners, took `iterations`).
+  int strips = 0, strip_iterations = 0;
+  double strip_share = 0.0;
 };
 
 struct Relaxed {

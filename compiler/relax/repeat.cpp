@@ -10,21 +10,14 @@
 #include "parallel.hpp"
 #include "relax/chains.hpp"
 #include "relax/contacts.hpp"
+#include "relax/strips.hpp"
 #include "spatial/columns.hpp"
 
 namespace knitc::relax {
 
 namespace {
 
-// The loops by (course, needle position): -1 where there is none.
-struct Grid {
-  int courses = 0, wales = 0;
-  std::vector<long> at;
-  long operator()(int course, int wale) const {
-    if (course < 0 || course >= courses || wale < 0 || wale >= wales) return -1;
-    return at[static_cast<std::size_t>(course) * static_cast<std::size_t>(wales) + static_cast<std::size_t>(wale)];
-  }
-};
+using Grid = LoopGrid;
 
 Grid grid_of(const layout::Layout& layout) {
   Grid g{layout.courses, layout.wales, {}};
@@ -584,6 +577,17 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
     if (contacts.deepest(c) > laid + deeper_by_tiling * c.thickest_core) return std::nullopt;
   }
 
+  // Where the edges' bands form a frame, each is relaxed as a strip periodic along its
+  // edge and copied along it (strips.hpp); the corners are left, relaxed against them.
+  const std::vector<std::uint8_t> held_by_tile = start.held;
+  const Strips strips = options.by_strips
+                            ? relax_strips(layout, chains, sizes, options, repeat, relaxed_tile.stats.period, g, loop_held, start)
+                            : Strips{};
+  if (strips.points > 0) {
+    std::vector<std::uint8_t> needed = std::move(part.needed);
+    part = crop(chains, start, 3.0 * thickest);
+    part.needed = std::move(needed);
+  }
   Options edge_options = options;
   edge_options.by_repeat = false;
   Relaxed edges = relax_chains(layout, std::move(part.pieces), sizes, edge_options, &part.start);
@@ -621,7 +625,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
       for (std::size_t k = 0; k < chains[i].data_points.size(); ++k, ++at) {
         out.same_as[at] = static_cast<std::uint32_t>(at);
         const std::uint32_t t = tile_point[i][k];
-        if (t == none || !start.held[at] || part.needed[at] != 0) continue;
+        if (t == none || !held_by_tile[at] || part.needed[at] != 0) continue;
         if (first_copy[t] == none) first_copy[t] = static_cast<std::uint32_t>(at);
         out.same_as[at] = first_copy[t];
       }
@@ -631,9 +635,13 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   out.stats.repeat_wale0 = repeat.wale0;
   out.stats.repeat_course0 = repeat.course0;
   out.stats.repeat_iterations = relaxed_tile.stats.iterations;
-  out.stats.held_share = start.held.empty() ? 0.0
-                                            : static_cast<double>(std::count(start.held.begin(), start.held.end(), std::uint8_t{1})) /
-                                                  static_cast<double>(start.held.size());
+  out.stats.held_share = held_by_tile.empty() ? 0.0
+                                               : static_cast<double>(std::count(held_by_tile.begin(), held_by_tile.end(), std::uint8_t{1})) /
+                                                     static_cast<double>(held_by_tile.size());
+  out.stats.strips = strips.relaxed;
+  out.stats.strip_iterations = strips.iterations;
+  out.stats.strip_share = start.pos.empty() ? 0.0 : static_cast<double>(strips.points) / static_cast<double>(start.pos.size());
+  out.stats.end_overlap = std::max(out.stats.end_overlap, strips.end_overlap);
   out.stats.start_overlap = std::max(out.stats.start_overlap, relaxed_tile.stats.start_overlap);
   return out;
 }

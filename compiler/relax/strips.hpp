@@ -1,0 +1,48 @@
+// The edges of a fabric relaxed by its repeat, as strips periodic along each edge (issue
+// 18). Where the loops the tile does not hold form a frame (a band along the cast-on, the
+// last course and each selvedge, as plain fabric's do), each band is relaxed as one
+// repeat of an endless strip: the band's loops over one tile's width (or height), with
+// two courses (or wales) of the held interior beside them, their contacts wrapping along
+// the edge. The relaxed strip is copied along its edge, and only the corners are left to
+// relax against the copies. The work grows with the tile and the band's depth, not the
+// edge's length. Internal to relax/.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "relax/chains.hpp"
+#include "relax/repeat.hpp"
+
+namespace knitc::relax {
+
+// The fabric's loops by place: at[course * wales + wale], -1 where there is none.
+struct LoopGrid {
+  int courses = 0, wales = 0;
+  std::vector<long> at;
+  long operator()(int course, int wale) const {
+    if (course < 0 || course >= courses || wale < 0 || wale >= wales) return -1;
+    return at[static_cast<std::size_t>(course) * static_cast<std::size_t>(wales) + static_cast<std::size_t>(wale)];
+  }
+};
+
+struct Strips {
+  int relaxed = 0;         // strips relaxed and copied (0 to 4)
+  int iterations = 0;      // the most sweeps one took
+  double end_overlap = 0;  // the deepest core overlap one left, of the thickest core d
+  std::size_t points = 0;  // the fabric's points they placed
+};
+
+// Relaxes the bands of `start` (the tiled start of relax_by_repeat: every point's place,
+// held where the tile put it) that form a frame round the held interior, periodic with
+// `period` (mm, the tiled lattice's repeat, stretched as the tile was), and writes each
+// strip's copies into start, held. loop_held: per loop of the layout, whether the tile
+// holds it. Nothing is changed where the bands do not form a frame, a band is too short
+// to be worth a strip, or its loops do not repeat along it.
+Strips relax_strips(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes,
+                    const Options& options, const Repeat& repeat, glm::dvec2 period, const LoopGrid& grid,
+                    const std::vector<std::uint8_t>& loop_held, Start& start);
+
+}  // namespace knitc::relax
