@@ -90,7 +90,13 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
     fmt::print(stderr, "relaxation  {} iterations, {:.2f} s; cores overlap {:.3f} core d before, {:.3f} after; lengths changed <= {:.2f}%; "
                "pressed shells squeezed {:.0f}% on average\n",
                r.iterations, relax_seconds, r.start_overlap, r.end_overlap, 100.0 * r.length_change, 100.0 * r.compression);
-    if (r.repeat_wales > 0)
+    if (r.repeat_wales > 0 && r.strips > 0)
+      fmt::print(stderr,
+                 "by repeat   a tile of {} x {} loops relaxed in {} sweeps, tiled; {:.0f}% of the yarn held; the edges' {} bands relaxed as "
+                 "strips periodic along them (at most {} sweeps), {:.0f}% of the yarn; the corners in {} sweeps\n",
+                 r.repeat_wales, r.repeat_courses, r.repeat_iterations, 100.0 * r.held_share, r.strips, r.strip_iterations,
+                 100.0 * r.strip_share, r.iterations);
+    else if (r.repeat_wales > 0)
       fmt::print(stderr, "by repeat   a tile of {} x {} loops relaxed in {} sweeps, tiled; {:.0f}% of the yarn held, the rest relaxed in {} sweeps\n",
                  r.repeat_wales, r.repeat_courses, r.repeat_iterations, 100.0 * r.held_share, r.iterations);
     if (fabric.tiling_refused)
