@@ -174,27 +174,24 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
       for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
       fabric.crossings = measure::relaxation_changes(laid, relaxed.pieces, thickest, options.threads);
       fabric.crossings_checked = true;
-      // (Strips first: the bands relaxed whole, by the same repeat.)
+      // Relaxed again another way, kept if it passed fewer yarns through another.
+      auto retry = [&](relax::Options again, bool whole) {
+        auto other = relax::relax(fabric.layout, laid, sizes, again);
+        auto other_crossings = measure::relaxation_changes(laid, other.pieces, thickest, options.threads);
+        if (measure::passed_through(other_crossings) >= measure::passed_through(fabric.crossings)) return;
+        fabric.tiling_refused = whole;
+        relaxed = std::move(other);
+        fabric.crossings = other_crossings;
+      };
       if (relaxed.stats.strips > 0 && measure::passed_through(fabric.crossings) > 0) {
-        relax::Options band_options = ro;
-        band_options.by_strips = false;
-        auto banded = relax::relax(fabric.layout, laid, sizes, band_options);
-        auto banded_crossings = measure::relaxation_changes(laid, banded.pieces, thickest, options.threads);
-        if (measure::passed_through(banded_crossings) < measure::passed_through(fabric.crossings)) {
-          relaxed = std::move(banded);
-          fabric.crossings = banded_crossings;
-        }
+        relax::Options bands = ro;  // by the same repeat, the edges' bands relaxed whole
+        bands.by_strips = false;
+        retry(bands, false);
       }
       if (relaxed.stats.repeat_wales > 0 && measure::passed_through(fabric.crossings) > 0) {
-        relax::Options whole_options = ro;
-        whole_options.by_repeat = false;
-        auto whole = relax::relax(fabric.layout, laid, sizes, whole_options);
-        auto whole_crossings = measure::relaxation_changes(laid, whole.pieces, thickest, options.threads);
-        if (measure::passed_through(whole_crossings) < measure::passed_through(fabric.crossings)) {
-          fabric.tiling_refused = true;
-          relaxed = std::move(whole);
-          fabric.crossings = whole_crossings;
-        }
+        relax::Options whole = ro;
+        whole.by_repeat = false;
+        retry(whole, true);
       }
     }
     paths = std::move(relaxed.pieces);

@@ -1,6 +1,7 @@
 #include "relax/repeat.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 
@@ -206,6 +207,20 @@ Crop crop(const std::vector<yarn_paths::Piece>& chains, const Start& start, doub
 }
 
 }  // namespace
+
+bool deeper_than_laid(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn::Size>& sizes,
+                      const Start& start, int threads) {
+  Chains c = chains_of(layout, laid, sizes, Boundary::free);
+  assert(start.pos.size() == c.pos.size() && start.held.size() == c.pos.size());
+  Contacts contacts(glm::dvec2(0.0), contact_margin * c.thickest, false, thread_count(threads));
+  contacts.find(c);
+  const double deepest_laid = contacts.deepest(c);
+  c.pos = start.pos;
+  for (std::size_t i = 0; i < c.pos.size(); ++i)
+    if (start.held[i]) c.inv_mass[i] = 0.0;
+  contacts.find(c);
+  return contacts.deepest(c) > deepest_laid + deeper_by_tiling * c.thickest_core;
+}
 
 std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   if (layout.knitting != Knitting::flat || layout.courses < 8 || layout.wales < 8) return std::nullopt;
@@ -561,33 +576,23 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // tuck's held loops, blended over the edges), the whole fabric is relaxed instead.
   // The check, and the edges' relaxation after it, look at the edges' part of the fabric
   // only (crop): the held interior, most of a garment, lies as in the tile, and its points
-  // cost nothing per sweep.
+  // cost nothing per sweep. Where the edges' bands form a frame, each is relaxed as a
+  // strip periodic along its edge and copied along it (strips.hpp), each strip checked
+  // alone; the corners are left, checked and relaxed against the copies.
   double thickest = 0.0;
   for (const auto& size : sizes) thickest = std::max(thickest, size.free_diameter);
   Crop part = crop(chains, start, 3.0 * thickest);
-  {
-    Chains c = chains_of(layout, part.pieces, sizes, Boundary::free);
-    Contacts contacts(glm::dvec2(0.0), contact_margin * c.thickest, false, thread_count(options.threads));
-    contacts.find(c);
-    const double laid = contacts.deepest(c);
-    c.pos = part.start.pos;
-    for (std::size_t i = 0; i < c.pos.size(); ++i)
-      if (part.start.held[i]) c.inv_mass[i] = 0.0;
-    contacts.find(c);
-    if (contacts.deepest(c) > laid + deeper_by_tiling * c.thickest_core) return std::nullopt;
-  }
-
-  // Where the edges' bands form a frame, each is relaxed as a strip periodic along its
-  // edge and copied along it (strips.hpp); the corners are left, relaxed against them.
   const std::vector<std::uint8_t> held_by_tile = start.held;
   const Strips strips = options.by_strips
                             ? relax_strips(layout, chains, sizes, options, repeat, relaxed_tile.stats.period, g, loop_held, start)
                             : Strips{};
+  if (strips.refused) return std::nullopt;
   if (strips.points > 0) {
     std::vector<std::uint8_t> needed = std::move(part.needed);
     part = crop(chains, start, 3.0 * thickest);
     part.needed = std::move(needed);
   }
+  if (deeper_than_laid(layout, part.pieces, sizes, part.start, options.threads)) return std::nullopt;
   Options edge_options = options;
   edge_options.by_repeat = false;
   Relaxed edges = relax_chains(layout, std::move(part.pieces), sizes, edge_options, &part.start);

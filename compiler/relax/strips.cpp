@@ -225,7 +225,11 @@ Strips relax_strips(const layout::Layout& layout, const std::vector<yarn_paths::
   strip_options.boundary = Boundary::free;
   auto run_strip = [&](const Block& b, auto&& target) {
     Strip s;
-    if (!make_strip(f, b, period, start, s)) return;
+    if (out.refused || !make_strip(f, b, period, start, s)) return;
+    if (deeper_than_laid(s.layout, s.runs, sizes, s.start, options.threads)) {
+      out.refused = true;
+      return;
+    }
     Relaxed r = relax_chains(s.layout, s.runs, sizes, strip_options, &s.start);
     std::vector<int> targets;
     for (int c = 0; c < C; ++c)

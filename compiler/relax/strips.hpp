@@ -33,6 +33,7 @@ struct Strips {
   int iterations = 0;      // the most sweeps one took
   double end_overlap = 0;  // the deepest core overlap one left, of the thickest core d
   std::size_t points = 0;  // the fabric's points they placed
+  bool refused = false;    // a strip's tiled start lay too deep (deeper_than_laid): relax the fabric whole
 };
 
 // Relaxes the bands of `start` (the tiled start of relax_by_repeat: every point's place,
