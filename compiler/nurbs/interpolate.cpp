@@ -5,6 +5,7 @@
 // elimination stable.
 #include "nurbs.hpp"
 
+#include <cassert>
 #include <cmath>
 #include <stdexcept>
 
@@ -26,27 +27,37 @@ class BandMatrix {
     return cells_[static_cast<std::size_t>(r) * (lower_ + upper_ + 1) + (c - r + lower_)];
   }
 
-  // In-place LU without pivoting, then solves for every right-hand side column.
+  // In-place LU without pivoting, then solves for every right-hand side column. (The
+  // entries read inside the band without at()'s check: a garment's curve is a million
+  // rows.)
   void solve(std::vector<Point>& rhs) {
     for (int k = 0; k < n_; ++k) {
-      const double pivot = at(k, k);
+      const double pivot = cell(k, k);
       if (std::abs(pivot) < 1e-300) throw std::invalid_argument("nurbs: singular interpolation system");
+      const int last_c = std::min(n_ - 1, k + upper_);
       for (int r = k + 1; r <= std::min(n_ - 1, k + lower_); ++r) {
-        const double f = at(r, k) / pivot;
+        const double f = cell(r, k) / pivot;
         if (f == 0.0) continue;
-        at(r, k) = f;
-        for (int c = k + 1; c <= std::min(n_ - 1, k + upper_); ++c) at(r, c) -= f * at(k, c);
-        rhs[r] -= f * rhs[k];
+        cell(r, k) = f;
+        double* row = row_of(r);
+        const double* top = row_of(k);
+        for (int c = k + 1; c <= last_c; ++c) row[c] -= f * top[c];
+        rhs[static_cast<std::size_t>(r)] -= f * rhs[static_cast<std::size_t>(k)];
       }
     }
     for (int k = n_ - 1; k >= 0; --k) {
-      Point v = rhs[k];
-      for (int c = k + 1; c <= std::min(n_ - 1, k + upper_); ++c) v -= at(k, c) * rhs[c];
-      rhs[k] = v / at(k, k);
+      Point v = rhs[static_cast<std::size_t>(k)];
+      const double* row = row_of(k);
+      for (int c = k + 1; c <= std::min(n_ - 1, k + upper_); ++c) v -= row[c] * rhs[static_cast<std::size_t>(c)];
+      rhs[static_cast<std::size_t>(k)] = v / cell(k, k);
     }
   }
 
  private:
+  // (r, c) inside the band, unchecked; row_of(r)[c] is (r, c) for any c in the band (the
+  // row's cells, shifted so a column indexes them).
+  double* row_of(int r) { return cells_.data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(lower_ + upper_) + static_cast<std::size_t>(lower_); }
+  double& cell(int r, int c) { return row_of(r)[c]; }
   int n_, lower_, upper_;
   std::vector<double> cells_;
 };
@@ -67,9 +78,12 @@ std::vector<double> data_parameters(std::span<const Point> q, Parametrisation ki
   return u;
 }
 
-// Fills row `row` of the matrix with the basis functions at u.
-void put_basis_row(BandMatrix& m, const Curve& c, int row, double u) {
-  const int span = find_span(c, u);
+// Fills row `row` of the matrix with the basis functions at u. span: the knot span found
+// for the last row (the rows' parameters ascend), walked on to u's.
+void put_basis_row(BandMatrix& m, const Curve& c, int row, double u, int& span) {
+  const int last = static_cast<int>(c.points.size()) - 1;
+  while (span < last && c.knots[static_cast<std::size_t>(span) + 1] <= u) ++span;
+  assert(span == find_span(c, u));
   BasisTable N;
   basis_derivatives(c, span, u, 0, N);
   for (int j = 0; j <= c.degree; ++j) m.at(row, span - c.degree + j) = N[0][j];
@@ -113,9 +127,10 @@ Interpolant interpolate(std::span<const Point> q, const InterpolationOptions& op
   // The band: a row's span lies within p columns of its diagonal either way.
   BandMatrix m(controls, p + 1, p + 1);
   std::vector<Point> rhs(controls);
+  int span = p;
   if (!with_ends) {
     for (int k = 0; k <= n; ++k) {
-      put_basis_row(m, c, k, ub[k]);
+      put_basis_row(m, c, k, ub[k], span);
       rhs[k] = q[k];
     }
   } else {
@@ -127,7 +142,7 @@ Interpolant interpolate(std::span<const Point> q, const InterpolationOptions& op
     m.at(1, 1) = 1.0;
     rhs[1] = (first / p) * *options.start_derivative;
     for (int k = 1; k < n; ++k) {
-      put_basis_row(m, c, k + 1, ub[k]);
+      put_basis_row(m, c, k + 1, ub[k], span);
       rhs[k + 1] = q[k];
     }
     m.at(n + 1, n + 1) = -1.0;

@@ -17,6 +17,13 @@ std::vector<yarn_paths::Piece> refine(std::vector<yarn_paths::Piece> pieces, con
     if (piece.data_points.size() < 2) continue;
     const double step = spacing * diameter[static_cast<std::size_t>(piece.yarn)];
     const auto curve = nurbs::interpolate(piece.data_points);
+    // The inserted points' parameters ascend: their knot span walked, not searched for.
+    const int last_span = static_cast<int>(curve.curve.points.size()) - 1;
+    int span = curve.curve.degree;
+    auto at = [&](double u) {
+      while (span < last_span && curve.curve.knots[static_cast<std::size_t>(span) + 1] <= u) ++span;
+      return nurbs::derivatives(curve.curve, span, u, 0)[0];
+    };
     std::vector<glm::dvec3> points;
     std::vector<std::size_t> new_index(piece.data_points.size());
     points.reserve(piece.data_points.size() * 3);
@@ -24,7 +31,7 @@ std::vector<yarn_paths::Piece> refine(std::vector<yarn_paths::Piece> pieces, con
       if (k > 0) {
         const int n = static_cast<int>(std::ceil(glm::distance(piece.data_points[k - 1], piece.data_points[k]) / step));
         const double u0 = curve.parameters[k - 1], u1 = curve.parameters[k];
-        for (int j = 1; j < n; ++j) points.push_back(nurbs::evaluate(curve.curve, u0 + (u1 - u0) * j / n));
+        for (int j = 1; j < n; ++j) points.push_back(at(u0 + (u1 - u0) * j / n));
       }
       new_index[k] = points.size();
       points.push_back(piece.data_points[k]);
