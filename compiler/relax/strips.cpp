@@ -145,6 +145,8 @@ std::size_t copy_strip(const Fabric& f, const Block& b, glm::dvec2 period, const
   const auto& layout = f.layout;
   const int P = b.w1 - b.w0, Q = b.c1 - b.c0;
   std::size_t placed = 0;
+  std::vector<std::uint8_t> is_target(layout.loops.size(), 0);
+  for (const int target : targets) is_target[static_cast<std::size_t>(target)] = 1;
   for (const int target : targets) {
     const auto l = static_cast<std::size_t>(target);
     const auto& loop = layout.loops[l];
@@ -167,10 +169,11 @@ std::size_t copy_strip(const Fabric& f, const Block& b, glm::dvec2 period, const
       return true;
     };
     if (!alike(0, n)) continue;
-    // On to the next loop's first point, where the block's yarn has as many there.
+    // On to the next loop's first point, where that loop is copied too (not a corner's,
+    // which relaxes on) and the block's yarn has as many points there.
     const std::size_t next = tj + 1 < run.loops.size() ? run.loop_first[tj + 1] : s.period_end[r];
-    if (pj + 1 < piece.loops.size() && next > tf + n && next <= run.data_points.size() && piece.loop_first[pj + 1] - fa == next - tf &&
-        alike(n + 1, next - tf - 1))
+    if (pj + 1 < piece.loops.size() && is_target[static_cast<std::size_t>(piece.loops[pj + 1])] && next > tf + n &&
+        next <= run.data_points.size() && piece.loop_first[pj + 1] - fa == next - tf && alike(n + 1, next - tf - 1))
       n = next - tf - 1;
     const std::size_t g = f.first[static_cast<std::size_t>(f.owner[l].first)] + fa;
     for (std::size_t k = 0; k <= n; ++k) {
