@@ -1,6 +1,7 @@
 #include "curves/curves.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <limits>
 
 #include "parallel.hpp"
@@ -17,9 +18,38 @@ double max_sample_step(const Yarn& yarn) {
                                                             : std::numeric_limits<double>::infinity();
 }
 
-CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& options) {
+std::vector<std::size_t> copied_spans(std::span<const std::size_t> breaks, std::span<const std::uint32_t> same_as,
+                                      std::span<const glm::dvec3> points) {
+  constexpr double same = 1e-9;  // mm
+  const std::size_t spans = breaks.size() - 1;
+  std::vector<std::size_t> from(spans);
+  std::vector<std::size_t> span_at(points.size() + 1, spans);  // the span starting at a break
+  for (std::size_t k = 0; k < spans; ++k) {
+    from[k] = k;
+    span_at[breaks[k]] = k;
+  }
+  if (same_as.empty()) return from;
+  for (std::size_t k = 0; k < spans; ++k) {
+    const std::size_t a = breaks[k], b = breaks[k + 1];
+    if (same_as[a] >= a || b + copy_margin >= points.size()) continue;
+    const std::size_t shift = a - same_as[a];
+    const std::size_t r = span_at[a - shift];
+    if (r == spans || breaks[r + 1] != b - shift || from[r] != r || a - shift < copy_margin) continue;
+    const glm::dvec3 move = points[a] - points[a - shift];
+    bool copy = true;
+    for (std::size_t i = a - copy_margin; i <= b + copy_margin && copy; ++i) {
+      const glm::dvec3 off = points[i] - points[i - shift] - move;
+      copy = std::abs(off.x) <= same && std::abs(off.y) <= same && std::abs(off.z) <= same;
+    }
+    if (copy) from[k] = r;
+  }
+  return from;
+}
+
+CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& options, std::span<const std::uint32_t> same_as) {
   CurvePiece piece;
   piece.path = std::move(path);
+  assert(same_as.empty() || same_as.size() == piece.path.data_points.size());
   nurbs::InterpolationOptions io;
   io.parametrisation = options.parametrisation;
   piece.curve = nurbs::interpolate(piece.path.data_points, io);
@@ -36,33 +66,48 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
   std::sort(breaks.begin(), breaks.end());
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
   std::vector<std::size_t> sample_at(u.size(), 0);  // the sample at each break
-  // The spans between breaks are sampled independently, in parallel, then joined in order.
+  // The spans between breaks are sampled and their steps measured independently, in
+  // parallel, then joined in order; a copy takes its span's, moved along.
   const int threads = thread_count(options.threads);
-  std::vector<std::vector<double>> spans(breaks.size() - 1);
+  const std::vector<std::size_t> from = copied_spans(breaks, same_as, piece.path.data_points);
+  std::vector<std::vector<double>> spans(breaks.size() - 1), steps(spans.size());
   parallel_for(spans.size(), threads, [&](std::size_t k) {
+    if (from[k] != k) return;
     spans[k] = sweep::sample_parameters(piece.curve.curve, u[breaks[k]], u[breaks[k + 1]], tolerance, 0.5 * d, max_step);
+    steps[k].resize(spans[k].size() - 1);
+    nurbs::segment_lengths(piece.curve.curve, spans[k], steps[k]);
+  });
+  parallel_for(spans.size(), threads, [&](std::size_t k) {
+    const std::size_t r = from[k];
+    if (r == k) return;
+    const double a = u[breaks[k]], b = u[breaks[k + 1]], shift = a - u[breaks[r]];
+    spans[k] = spans[r];
+    for (double& s : spans[k]) s += shift;
+    spans[k].front() = a;
+    spans[k].back() = b;
+    // The moved parameters still ascend inside [a, b] (else the span is sampled afresh).
+    bool ascending = true;
+    for (std::size_t i = 1; i < spans[k].size(); ++i) ascending = ascending && spans[k][i - 1] < spans[k][i];
+    if (ascending) {
+      steps[k] = steps[r];
+      return;
+    }
+    spans[k] = sweep::sample_parameters(piece.curve.curve, a, b, tolerance, 0.5 * d, max_step);
+    steps[k].resize(spans[k].size() - 1);
+    nurbs::segment_lengths(piece.curve.curve, spans[k], steps[k]);
   });
   piece.samples.push_back(u[0]);
+  piece.arc_length.push_back(0.0);
   for (std::size_t k = 0; k < spans.size(); ++k) {
     piece.samples.insert(piece.samples.end(), spans[k].begin() + 1, spans[k].end());
+    for (const double step : steps[k]) piece.arc_length.push_back(piece.arc_length.back() + step);
     sample_at[breaks[k + 1]] = piece.samples.size() - 1;
   }
   spans = {};
+  steps = {};
   for (std::size_t j = 0; j < piece.path.loops.size(); ++j)
     piece.loop_samples.emplace_back(sample_at[piece.path.loop_first[j]], sample_at[piece.path.loop_last[j]]);
   piece.frames = sweep::frames(piece.curve.curve, piece.samples, options.frames, threads);
-  // Each step's length in parallel (blocks of steps, each walking its knot spans), then
-  // summed in order.
-  std::vector<double> step(piece.samples.size(), 0.0);
-  constexpr std::size_t block = 1024;
-  const std::size_t steps = piece.samples.size() - 1;
-  parallel_for((steps + block - 1) / block, threads, [&](std::size_t b) {
-    const std::size_t from = b * block, to = std::min(steps, from + block);
-    nurbs::segment_lengths(piece.curve.curve, std::span<const double>(piece.samples).subspan(from, to - from + 1),
-                           std::span<double>(step).subspan(from + 1, to - from));
-  });
-  piece.arc_length.assign(piece.samples.size(), 0.0);
-  for (std::size_t i = 1; i < piece.samples.size(); ++i) piece.arc_length[i] = piece.arc_length[i - 1] + step[i];
   if (piece.path.pressed.size() == u.size()) {
     const auto& at = piece.path.pressed;
     piece.pressed.resize(piece.samples.size());

@@ -3,6 +3,8 @@
 // every sample. Yarn paths in, curve pieces out.
 #pragma once
 
+#include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -47,7 +49,22 @@ double max_sample_step(const Yarn& yarn);
 
 // Fits and samples one piece of `yarn`: every loop join is a sample and each loop owns
 // its samples; floats, turns and tails are spans of their own.
-CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& options);
+// `same_as`, empty or one per data point: the index of an earlier point of this piece
+// whose surroundings along the yarn are this one's moved by one translation (the
+// relaxation's copies of its repeat, relax::Relaxed::same_as), or the point's own. A span
+// between loop ends whose points, and `copy_margin` more on either side, are such copies
+// of one earlier span, point for point, takes that span's samples and step lengths (its
+// parameters moved along): the curve there is the earlier span's moved, to the global
+// fit's reach (a cubic interpolant's influence decays by 2 - sqrt 3 a point).
+inline constexpr std::size_t copy_margin = 12;
+CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& options, std::span<const std::uint32_t> same_as = {});
+
+// Per span between consecutive `breaks` (ascending indices of `points`, the first 0), the
+// index of the earlier span trace() copies it from, or its own: same_as proposes the
+// earlier span, which must have the same length and be sampled itself, and the points
+// round both, copy_margin either side, must lie one translation apart to 1e-9 mm.
+std::vector<std::size_t> copied_spans(std::span<const std::size_t> breaks, std::span<const std::uint32_t> same_as,
+                                      std::span<const glm::dvec3> points);
 
 // About how many samples trace() places along a piece, from its data points alone (0.87
 // to 1.05 of the count on the library's fabrics): for refusing a fabric too large to
