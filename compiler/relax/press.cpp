@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 
 #include <glm/geometric.hpp>
 
@@ -51,6 +52,42 @@ glm::dvec3 tangent(const Points& p, std::size_t k, std::size_t from, std::size_t
   return l > 0.0 ? d / l : glm::dvec3(0.0);
 }
 
+// The grid's columns within one of a point `chosen` picks (all, where the columns are too
+// many to list: a scatter, not a fabric).
+struct ColumnMask {
+  std::int64_t x0 = 0, y0 = 0, nx = 0, ny = 0;
+  std::vector<std::uint8_t> in;  // empty: every column
+  bool holds(const glm::i64vec3& cell) const {
+    if (in.empty()) return true;
+    const std::int64_t x = cell.x - x0, y = cell.y - y0;
+    return x >= 0 && y >= 0 && x < nx && y < ny && in[static_cast<std::size_t>(x * ny + y)];
+  }
+};
+
+template <class Chosen>
+ColumnMask columns_near(const std::vector<glm::dvec3>& pos, const spatial::Columns& grid, Chosen&& chosen) {
+  ColumnMask mask;
+  std::size_t picked = 0;
+  std::int64_t xl = INT64_MAX, xh = INT64_MIN, yl = INT64_MAX, yh = INT64_MIN;
+  for (std::size_t i = 0; i < pos.size(); ++i) {
+    const glm::i64vec3 c = grid.cell_of(pos[i]);
+    xl = std::min(xl, c.x), xh = std::max(xh, c.x), yl = std::min(yl, c.y), yh = std::max(yh, c.y);
+    picked += chosen(i) ? 1 : 0;
+  }
+  if (picked == pos.size() || pos.empty()) return mask;
+  const double columns = (static_cast<double>(xh - xl) + 3.0) * (static_cast<double>(yh - yl) + 3.0);
+  if (columns > 4.0 * static_cast<double>(pos.size()) + 4096.0) return mask;
+  mask.x0 = xl - 1, mask.y0 = yl - 1, mask.nx = xh - xl + 3, mask.ny = yh - yl + 3;
+  mask.in.assign(static_cast<std::size_t>(mask.nx * mask.ny), 0);
+  for (std::size_t i = 0; i < pos.size(); ++i) {
+    if (!chosen(i)) continue;
+    const glm::i64vec3 c = grid.cell_of(pos[i]);
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy) mask.in[static_cast<std::size_t>((c.x + dx - mask.x0) * mask.ny + (c.y + dy - mask.y0))] = 1;
+  }
+  return mask;
+}
+
 }  // namespace
 
 void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes, int threads,
@@ -68,8 +105,13 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     // Segments by their midpoints: a cell holds every segment a point's free surface can
     // reach from the next cell.
     spatial::Columns grid(thickest + longest);
+    // Only the segments a pressed point looks at (its cell's 3 x 3 columns).
+    const ColumnMask wanted = columns_near(p.pos, grid, own);
     for (std::size_t i = 0; i + 1 < n; ++i)
-      if (p.piece[i] == p.piece[i + 1]) grid.add(grid.cell_of(0.5 * (p.pos[i] + p.pos[i + 1])), static_cast<std::uint32_t>(i));
+      if (p.piece[i] == p.piece[i + 1]) {
+        const glm::i64vec3 cell = grid.cell_of(0.5 * (p.pos[i] + p.pos[i + 1]));
+        if (wanted.holds(cell)) grid.add(cell, static_cast<std::uint32_t>(i));
+      }
     grid.index();
     // By blocks of points, not by pieces: a garment is often one piece.
     constexpr std::size_t block = 4096;
@@ -112,36 +154,41 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
       if (!own(i)) pressed[i] = pressed[same_as[i]];
   }
   // An ellipse is the same turned half a turn: each piece's directions turned to agree
-  // with the last pressed one before it, then smoothed along the piece.
+  // with the last pressed one before it, then smoothed along the piece (twice by 1/4,
+  // 1/2, 1/4, the ends repeated) and made across the yarn again.
   for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
-    const std::size_t from = p.first[piece], to = p.first[piece + 1];
     glm::dvec3 last(0.0);
-    for (std::size_t i = from; i < to; ++i) {
+    for (std::size_t i = p.first[piece]; i < p.first[piece + 1]; ++i) {
       if (glm::dot(pressed[i], pressed[i]) == 0.0) continue;
       if (glm::dot(pressed[i], last) < 0.0) pressed[i] = -pressed[i];
       last = pressed[i];
     }
-    std::vector<glm::dvec3> smooth(pressed.begin() + static_cast<std::ptrdiff_t>(from), pressed.begin() + static_cast<std::ptrdiff_t>(to));
-    for (int pass = 0; pass < 2; ++pass) {
-      std::vector<glm::dvec3> next = smooth;
-      for (std::size_t k = 0; k < smooth.size(); ++k) {
-        const glm::dvec3& a = smooth[k > 0 ? k - 1 : k];
-        const glm::dvec3& b = smooth[k + 1 < smooth.size() ? k + 1 : k];
-        next[k] = 0.25 * a + 0.5 * smooth[k] + 0.25 * b;
-      }
-      smooth = std::move(next);
-    }
-    // The smoothed vectors, made across the yarn again.
-    auto& out = pieces[piece].pressed;
-    out.assign(smooth.size(), glm::dvec3(0.0));
-    for (std::size_t k = 0; k < smooth.size(); ++k) {
-      const glm::dvec3 t = tangent(p, from + k, from, to);
-      const double amount = glm::length(smooth[k]);
-      glm::dvec3 across = smooth[k] - glm::dot(smooth[k], t) * t;
-      const double l = glm::length(across);
-      if (amount > 1e-9 && l > 1e-9) out[k] = amount * across / l;
-    }
+    pieces[piece].pressed.assign(p.first[piece + 1] - p.first[piece], glm::dvec3(0.0));
   }
+  // A pass reads its neighbours in the piece, the ends repeated.
+  auto smoothed = [&](const std::vector<glm::dvec3>& v, std::size_t i) {
+    const std::size_t from = p.first[p.piece[i]], to = p.first[p.piece[i] + 1];
+    const glm::dvec3& a = v[i > from ? i - 1 : i];
+    const glm::dvec3& b = v[i + 1 < to ? i + 1 : i];
+    return 0.25 * a + 0.5 * v[i] + 0.25 * b;
+  };
+  constexpr std::size_t block = 16384;
+  const std::size_t blocks = (n + block - 1) / block;
+  std::vector<glm::dvec3> once(n);
+  parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
+    for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) once[i] = smoothed(pressed, i);
+  });
+  parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
+    for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
+      const glm::dvec3 twice = smoothed(once, i);
+      const std::size_t piece = p.piece[i], from = p.first[piece];
+      const glm::dvec3 t = tangent(p, i, from, p.first[piece + 1]);
+      const double amount = glm::length(twice);
+      glm::dvec3 across = twice - glm::dot(twice, t) * t;
+      const double l = glm::length(across);
+      if (amount > 1e-9 && l > 1e-9) pieces[piece].pressed[i - from] = amount * across / l;
+    }
+  });
 }
 
 }  // namespace knitc::relax

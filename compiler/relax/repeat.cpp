@@ -529,6 +529,14 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   }
   Start start;
   std::vector<std::uint8_t> scan_from, scan_at;  // per point: within edge_band + 1 loops of one not held; within far
+  {
+    std::size_t points = 0;
+    for (const auto& piece : chains) points += piece.data_points.size();
+    start.pos.reserve(points);
+    start.held.reserve(points);
+    scan_from.reserve(points);
+    scan_at.reserve(points);
+  }
   for (std::size_t i = 0; i < chains.size(); ++i) {
     const auto& piece = chains[i];
     std::vector<std::uint8_t> held(piece.data_points.size(), 0), on_loop(piece.data_points.size(), 0);
