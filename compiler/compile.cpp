@@ -164,7 +164,7 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     }
     relax::Options ro = options.relaxation;
     ro.threads = options.threads;
-    auto laid = relax::refine(std::move(paths), core, ro.spacing);
+    auto laid = relax::refine(std::move(paths), core, ro.spacing, options.threads);
     auto relaxed = relax::relax(fabric.layout, laid, sizes, ro);
     // The relaxation checked by its result: did any yarn come out on the other side of
     // another (docs/relaxation.md)? Tiling jumps the yarn to the tile's places with no

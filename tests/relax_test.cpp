@@ -11,6 +11,7 @@
 
 #include "measure/crossings.hpp"
 #include "measure/measure.hpp"
+#include "nurbs/nurbs.hpp"
 #include "relax/contacts.hpp"
 #include "relax/press.hpp"
 #include "relax/relax.hpp"
@@ -222,6 +223,35 @@ TEST(Relax, RefineKeepsEveryPointAndLoop) {
     // The chords between data points are cut into pieces of at most 0.5: on the curve, a
   // little more where it bends.
   for (std::size_t k = 1; k < b.data_points.size(); ++k) EXPECT_LE(glm::distance(b.data_points[k - 1], b.data_points[k]), 0.75);
+}
+
+// A long piece's inserted points, found in blocks on two threads, lie on its curve where
+// each one's parameter, searched for alone, puts it: the same bits.
+TEST(Relax, RefineOnThreadsPutsEachPointOnTheCurveAsSearchedFor) {
+  yarn_paths::Piece piece;
+  for (int k = 0; k < 20000; ++k)
+    piece.data_points.emplace_back(0.9 * k, std::sin(0.37 * k), 0.3 * std::cos(0.11 * k) + (k % 7 == 0 ? 0.4 : 0.0));
+  const auto curve = nurbs::interpolate(piece.data_points);
+  const auto refined = relax::refine({piece}, {1.0}, 0.35, 2);
+  const auto& points = refined[0].data_points;
+  ASSERT_GT(points.size(), 2 * piece.data_points.size());
+  EXPECT_EQ(relax::refine({piece}, {1.0}, 0.35, 1)[0].data_points, points);
+  // Walk the old points through the new: between old k - 1 and k, m - 1 points at
+  // parameters j / m of the way.
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < piece.data_points.size(); ++k) {
+    if (k > 0) {
+      std::size_t next = at + 1;
+      while (points[next] != piece.data_points[k]) ++next;
+      const std::size_t m = next - at;
+      const double u0 = curve.parameters[k - 1], u1 = curve.parameters[k];
+      for (std::size_t j = 1; j < m; ++j)
+        ASSERT_EQ(points[at + j], nurbs::derivatives(curve.curve, u0 + (u1 - u0) * static_cast<double>(j) / static_cast<double>(m), 0)[0])
+            << k << " " << j;
+      at = next;
+    }
+    ASSERT_EQ(points[at], piece.data_points[k]);
+  }
 }
 
 // The repeat is found from the layout: the smallest block of loops that repeats across

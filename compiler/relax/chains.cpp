@@ -7,35 +7,45 @@
 #include <glm/geometric.hpp>
 
 #include "nurbs/nurbs.hpp"
+#include "parallel.hpp"
 
 namespace knitc::relax {
 
 std::vector<yarn_paths::Piece> refine(std::vector<yarn_paths::Piece> pieces, const std::vector<double>& diameter,
-                                      double spacing) {
+                                      double spacing, int threads) {
   assert(spacing > 0.0);
   for (yarn_paths::Piece& piece : pieces) {
     if (piece.data_points.size() < 2) continue;
     const double step = spacing * diameter[static_cast<std::size_t>(piece.yarn)];
     const auto curve = nurbs::interpolate(piece.data_points);
-    // The inserted points' parameters ascend: their knot span walked, not searched for.
-    const int last_span = static_cast<int>(curve.curve.points.size()) - 1;
-    int span = curve.curve.degree;
-    auto at = [&](double u) {
-      while (span < last_span && curve.curve.knots[static_cast<std::size_t>(span) + 1] <= u) ++span;
-      return nurbs::derivatives(curve.curve, span, u, 0)[0];
-    };
-    std::vector<glm::dvec3> points;
-    std::vector<std::size_t> new_index(piece.data_points.size());
-    points.reserve(piece.data_points.size() * 3);
-    for (std::size_t k = 0; k < piece.data_points.size(); ++k) {
-      if (k > 0) {
-        const int n = static_cast<int>(std::ceil(glm::distance(piece.data_points[k - 1], piece.data_points[k]) / step));
-        const double u0 = curve.parameters[k - 1], u1 = curve.parameters[k];
-        for (int j = 1; j < n; ++j) points.push_back(at(u0 + (u1 - u0) * j / n));
-      }
-      new_index[k] = points.size();
-      points.push_back(piece.data_points[k]);
+    // Where each old point goes: after the points inserted before it.
+    const std::size_t n = piece.data_points.size();
+    std::vector<std::size_t> new_index(n, 0);
+    for (std::size_t k = 1; k < n; ++k) {
+      const auto inserted = static_cast<std::size_t>(std::ceil(glm::distance(piece.data_points[k - 1], piece.data_points[k]) / step));
+      new_index[k] = new_index[k - 1] + std::max<std::size_t>(inserted, 1);
     }
+    std::vector<glm::dvec3> points(new_index.back() + 1);
+    // In blocks of old points, each walking its inserted points' knot spans (ascending),
+    // not searching: the same points for any thread count.
+    constexpr std::size_t block = 4096;
+    const int last_span = static_cast<int>(curve.curve.points.size()) - 1;
+    parallel_for((n + block - 1) / block, thread_count(threads), [&](std::size_t b) {
+      const std::size_t from = b * block, to = std::min(n, from + block);
+      int span = nurbs::find_span(curve.curve, curve.parameters[from > 0 ? from - 1 : 0]);  // the first inserted point's
+      for (std::size_t k = from; k < to; ++k) {
+        if (k > 0) {
+          const std::size_t m = new_index[k] - new_index[k - 1];
+          const double u0 = curve.parameters[k - 1], u1 = curve.parameters[k];
+          for (std::size_t j = 1; j < m; ++j) {
+            const double u = u0 + (u1 - u0) * static_cast<double>(j) / static_cast<double>(m);
+            while (span < last_span && curve.curve.knots[static_cast<std::size_t>(span) + 1] <= u) ++span;
+            points[new_index[k - 1] + j] = nurbs::derivatives(curve.curve, span, u, 0)[0];
+          }
+        }
+        points[new_index[k]] = piece.data_points[k];
+      }
+    });
     for (std::size_t& first : piece.loop_first) first = new_index[first];
     for (std::size_t& last : piece.loop_last) last = new_index[last];
     piece.data_points = std::move(points);

@@ -111,9 +111,10 @@ struct Relaxed {
 // The pieces with points inserted on each piece's interpolating curve (chord-length
 // parametrisation) so that no two consecutive points are more than spacing x d apart;
 // the old points are kept and loop_first follows them. diameter: mm, per Pattern::yarns
-// (the relaxation passes the core diameters).
+// (the relaxation passes the core diameters). On up to `threads` threads (0: every
+// core); the same points for any count.
 std::vector<yarn_paths::Piece> refine(std::vector<yarn_paths::Piece> pieces, const std::vector<double>& diameter,
-                                      double spacing);
+                                      double spacing, int threads = 1);
 
 // Relaxes refined chains (see refine) laid out by `layout`; the result has the same points,
 // moved. sizes: per Pattern::yarns.
