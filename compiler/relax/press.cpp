@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <cstdint>
 
 #include <glm/geometric.hpp>
 
@@ -52,42 +51,6 @@ glm::dvec3 tangent(const Points& p, std::size_t k, std::size_t from, std::size_t
   return l > 0.0 ? d / l : glm::dvec3(0.0);
 }
 
-// The grid's columns within one of a point `chosen` picks (all, where the columns are too
-// many to list: a scatter, not a fabric).
-struct ColumnMask {
-  std::int64_t x0 = 0, y0 = 0, nx = 0, ny = 0;
-  std::vector<std::uint8_t> in;  // empty: every column
-  bool holds(const glm::i64vec3& cell) const {
-    if (in.empty()) return true;
-    const std::int64_t x = cell.x - x0, y = cell.y - y0;
-    return x >= 0 && y >= 0 && x < nx && y < ny && in[static_cast<std::size_t>(x * ny + y)];
-  }
-};
-
-template <class Chosen>
-ColumnMask columns_near(const std::vector<glm::dvec3>& pos, const spatial::Columns& grid, Chosen&& chosen) {
-  ColumnMask mask;
-  std::size_t picked = 0;
-  std::int64_t xl = INT64_MAX, xh = INT64_MIN, yl = INT64_MAX, yh = INT64_MIN;
-  for (std::size_t i = 0; i < pos.size(); ++i) {
-    const glm::i64vec3 c = grid.cell_of(pos[i]);
-    xl = std::min(xl, c.x), xh = std::max(xh, c.x), yl = std::min(yl, c.y), yh = std::max(yh, c.y);
-    picked += chosen(i) ? 1 : 0;
-  }
-  if (picked == pos.size() || pos.empty()) return mask;
-  const double columns = (static_cast<double>(xh - xl) + 3.0) * (static_cast<double>(yh - yl) + 3.0);
-  if (columns > 4.0 * static_cast<double>(pos.size()) + 4096.0) return mask;
-  mask.x0 = xl - 1, mask.y0 = yl - 1, mask.nx = xh - xl + 3, mask.ny = yh - yl + 3;
-  mask.in.assign(static_cast<std::size_t>(mask.nx * mask.ny), 0);
-  for (std::size_t i = 0; i < pos.size(); ++i) {
-    if (!chosen(i)) continue;
-    const glm::i64vec3 c = grid.cell_of(pos[i]);
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy) mask.in[static_cast<std::size_t>((c.x + dx - mask.x0) * mask.ny + (c.y + dy - mask.y0))] = 1;
-  }
-  return mask;
-}
-
 }  // namespace
 
 void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes, int threads,
@@ -106,7 +69,7 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     // reach from the next cell.
     spatial::Columns grid(thickest + longest);
     // Only the segments a pressed point looks at (its cell's 3 x 3 columns).
-    const ColumnMask wanted = columns_near(p.pos, grid, own);
+    const spatial::ColumnMask wanted(p.pos, grid, own);
     for (std::size_t i = 0; i + 1 < n; ++i)
       if (p.piece[i] == p.piece[i + 1]) {
         const glm::i64vec3 cell = grid.cell_of(0.5 * (p.pos[i] + p.pos[i + 1]));

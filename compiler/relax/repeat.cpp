@@ -137,9 +137,8 @@ struct Crop {
   std::vector<std::uint8_t> needed;  // per point of the fabric: 1 free, 2 held within reach of a free one, 0 neither
 };
 
-Crop crop(const std::vector<yarn_paths::Piece>& chains, const Start& start, double reach) {
-  std::vector<std::size_t> first(chains.size() + 1, 0);
-  for (std::size_t i = 0; i < chains.size(); ++i) first[i + 1] = first[i] + chains[i].data_points.size();
+// Per point: 1 free, 2 held within `reach` (mm) of a free one, 0 neither.
+std::vector<std::uint8_t> near_free(const Start& start, double reach) {
   std::vector<std::uint8_t> needed(start.pos.size(), 0);
   spatial::Columns grid(reach);
   for (std::size_t g = 0; g < start.pos.size(); ++g)
@@ -148,14 +147,24 @@ Crop crop(const std::vector<yarn_paths::Piece>& chains, const Start& start, doub
       grid.add(grid.cell_of(start.pos[g]), static_cast<std::uint32_t>(g));
     }
   grid.index();
+  // Only points in a column beside a free one's can be within reach (the cell's width).
+  const spatial::ColumnMask beside_free(start.pos, grid, [&](std::size_t g) { return !start.held[g]; });
   for (std::size_t g = 0; g < start.pos.size(); ++g) {
     if (needed[g]) continue;
-    grid.near(grid.cell_of(start.pos[g]), [&](const spatial::Columns::Entry& e) {
+    const glm::i64vec3 cell = grid.cell_of(start.pos[g]);
+    if (!beside_free.holds(cell)) continue;
+    grid.near(cell, [&](const spatial::Columns::Entry& e) {
       if (!needed[g] && glm::distance(start.pos[e.item], start.pos[g]) <= reach) needed[g] = 2;
     });
   }
+  return needed;
+}
+
+// `needed`: near_free's.
+Crop crop(const std::vector<yarn_paths::Piece>& chains, const Start& start, std::vector<std::uint8_t> needed) {
+  std::vector<std::size_t> first(chains.size() + 1, 0);
+  for (std::size_t i = 0; i < chains.size(); ++i) first[i + 1] = first[i] + chains[i].data_points.size();
   Crop out;
-  out.needed = needed;
   constexpr std::size_t stencil = 4;  // points either way along the yarn
   for (std::size_t i = 0; i < chains.size(); ++i) {
     const auto& piece = chains[i];
@@ -203,6 +212,7 @@ Crop crop(const std::vector<yarn_paths::Piece>& chains, const Start& start, doub
       k = end;
     }
   }
+  out.needed = std::move(needed);
   return out;
 }
 
@@ -589,17 +599,16 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // alone; the corners are left, checked and relaxed against the copies.
   double thickest = 0.0;
   for (const auto& size : sizes) thickest = std::max(thickest, size.free_diameter);
-  Crop part = crop(chains, start, 3.0 * thickest);
+  const double reach = 3.0 * thickest;
+  std::vector<std::uint8_t> needed = near_free(start, reach);
   const std::vector<std::uint8_t> held_by_tile = start.held;
   const Strips strips = options.by_strips
                             ? relax_strips(layout, chains, sizes, options, repeat, relaxed_tile.stats.period, g, loop_held, start)
                             : Strips{};
   if (strips.refused) return std::nullopt;
-  if (strips.points > 0) {
-    std::vector<std::uint8_t> needed = std::move(part.needed);
-    part = crop(chains, start, 3.0 * thickest);
-    part.needed = std::move(needed);
-  }
+  // The interior's copies (same_as, below) are judged before the strips were held.
+  Crop part = crop(chains, start, strips.points > 0 ? near_free(start, reach) : needed);
+  part.needed = std::move(needed);
   if (deeper_than_laid(layout, part.pieces, sizes, part.start, options.threads)) return std::nullopt;
   Options edge_options = options;
   edge_options.by_repeat = false;

@@ -148,4 +148,46 @@ class Columns {
   std::int64_t x0_ = 0, y0_ = 0, nx_ = 0, ny_ = 0;
 };
 
+// The columns of a grid of `cell`-wide columns within one of a point `chosen` picks: what
+// a query round those points (Columns::near, its 3 x 3 columns) can reach, so that the
+// rest need not be indexed. `holds` answers true everywhere when every point is chosen or
+// the columns would be too many to list (a scatter, not a fabric).
+class ColumnMask {
+ public:
+  // n points, the i-th at cell(i) (a Columns cell), chosen(i) or not.
+  template <class Cell, class Chosen>
+  ColumnMask(std::size_t n, Cell&& cell, Chosen&& chosen) {
+    std::size_t picked = 0;
+    std::int64_t xl = INT64_MAX, xh = INT64_MIN, yl = INT64_MAX, yh = INT64_MIN;
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::i64vec3 c = cell(i);
+      xl = std::min(xl, c.x), xh = std::max(xh, c.x), yl = std::min(yl, c.y), yh = std::max(yh, c.y);
+      picked += chosen(i) ? 1 : 0;
+    }
+    if (picked == n) return;
+    const double columns = (static_cast<double>(xh - xl) + 3.0) * (static_cast<double>(yh - yl) + 3.0);
+    if (columns > 4.0 * static_cast<double>(n) + 4096.0) return;
+    x0_ = xl - 1, y0_ = yl - 1, nx_ = xh - xl + 3, ny_ = yh - yl + 3;
+    in_.assign(static_cast<std::size_t>(nx_ * ny_), 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!chosen(i)) continue;
+      const glm::i64vec3 c = cell(i);
+      for (std::int64_t dx = -1; dx <= 1; ++dx)
+        for (std::int64_t dy = -1; dy <= 1; ++dy) in_[static_cast<std::size_t>((c.x + dx - x0_) * ny_ + (c.y + dy - y0_))] = 1;
+    }
+  }
+  template <class Chosen>
+  ColumnMask(const std::vector<glm::dvec3>& pos, const Columns& grid, Chosen&& chosen)
+      : ColumnMask(pos.size(), [&](std::size_t i) { return grid.cell_of(pos[i]); }, chosen) {}
+  bool holds(const glm::i64vec3& cell) const {
+    if (in_.empty()) return true;
+    const std::int64_t x = cell.x - x0_, y = cell.y - y0_;
+    return x >= 0 && y >= 0 && x < nx_ && y < ny_ && in_[static_cast<std::size_t>(x * ny_ + y)];
+  }
+
+ private:
+  std::int64_t x0_ = 0, y0_ = 0, nx_ = 0, ny_ = 0;
+  std::vector<std::uint8_t> in_;  // empty: every column
+};
+
 }  // namespace knitc::spatial
