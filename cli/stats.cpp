@@ -105,8 +105,9 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
     if (fabric.crossings_checked) {
       const auto& x = fabric.crossings;
       fmt::print(stderr, "crossings   {} kept, {} flipped; {} lost and {} new, of which {} and {} alone where the yarns touched "
-                 "(a yarn passed through another), {} and {} by a yarn's end (a tail drawn back or out); {} at one height\n",
-                 x.kept, x.flipped, x.lost, x.found, x.lost_alone_touching, x.found_alone_touching, x.lost_at_end, x.found_at_end, x.ties);
+                 "(a yarn passed through another), {} and {} by a yarn's end (a tail drawn back or out); {} at one height{}\n",
+                 x.kept, x.flipped, x.lost, x.found, x.lost_alone_touching, x.found_alone_touching, x.lost_at_end, x.found_at_end, x.ties,
+                 x.copies_left_out ? "; counted where the yarn is not a copy of the tile's first (the copies cross as it does)" : "");
     }
   } else {
     fmt::print(stderr, "relaxation  off\n");

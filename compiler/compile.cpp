@@ -174,12 +174,12 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     if (fabric.layout.knitting == Knitting::flat) {
       double thickest = 0.0;
       for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
-      fabric.crossings = measure::relaxation_changes(laid, relaxed.pieces, thickest, options.threads);
+      fabric.crossings = measure::relaxation_changes(laid, relaxed.pieces, thickest, options.threads, relaxed.same_as);
       fabric.crossings_checked = true;
       // Relaxed again another way, kept if it passed fewer yarns through another.
       auto retry = [&](relax::Options again, bool whole) {
         auto other = relax::relax(fabric.layout, laid, sizes, again);
-        auto other_crossings = measure::relaxation_changes(laid, other.pieces, thickest, options.threads);
+        auto other_crossings = measure::relaxation_changes(laid, other.pieces, thickest, options.threads, other.same_as);
         if (measure::passed_through(other_crossings) >= measure::passed_through(fabric.crossings)) return;
         fabric.tiling_refused = whole;
         relaxed = std::move(other);

@@ -4,6 +4,7 @@
 #include "spatial/columns.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <span>
 #include <tuple>
@@ -28,7 +29,10 @@ auto order(const Crossing& c) { return std::tie(c.piece_a, c.piece_b, c.segment_
 
 }  // namespace
 
-std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near, int threads) {
+std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near, int threads,
+                                const std::vector<std::vector<std::uint8_t>>& looked_at) {
+  assert(looked_at.empty() || looked_at.size() == pieces.size());
+  auto looked = [&](const Segment& g) { return looked_at.empty() || looked_at[g.piece][g.index] != 0; };
   std::vector<Segment> segments;
   double longest = 0.0;
   std::size_t total = 0;
@@ -49,8 +53,17 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
   // is as long as the longest); the pairs that share a column are the candidates.
   const double cell = longest;
   spatial::Columns grid(cell);
-  grid.reserve(segments.size());
+  auto low_cell = [&](const Segment& g) {
+    const glm::dvec2 lo = glm::min(glm::dvec2(p_of(g)), glm::dvec2(q_of(g))) / cell;
+    return glm::i64vec2(static_cast<std::int64_t>(std::floor(lo.x)), static_cast<std::int64_t>(std::floor(lo.y)));
+  };
+  // A segment not looked at is indexed only where it may share a column with one that is
+  // (their boxes' low corners a column apart at most: a box spans two columns at most).
+  const spatial::ColumnMask beside_looked(
+      segments.size(), [&](std::size_t s) { return glm::i64vec3(low_cell(segments[s]), 0); },
+      [&](std::size_t s) { return looked(segments[s]); });
   for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (!looked(segments[s]) && !beside_looked.holds(glm::i64vec3(low_cell(segments[s]), 0))) continue;
     const glm::dvec2 lo = glm::min(glm::dvec2(p_of(segments[s])), glm::dvec2(q_of(segments[s]))) / cell;
     const glm::dvec2 hi = glm::max(glm::dvec2(p_of(segments[s])), glm::dvec2(q_of(segments[s]))) / cell;
     for (auto x = static_cast<std::int64_t>(std::floor(lo.x)); x <= static_cast<std::int64_t>(std::floor(hi.x)); ++x)
@@ -61,12 +74,9 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
   // A pair may share several columns: it is tested in the first of them only (the lowest
   // x, then y, the two boxes share), so no list of every pair is kept: on a garment that
   // list was tens of millions of pairs, its sort most of the time and memory here.
-  auto low_cell = [&](const Segment& g) {
-    const glm::dvec2 lo = glm::min(glm::dvec2(p_of(g)), glm::dvec2(q_of(g))) / cell;
-    return glm::i64vec2(static_cast<std::int64_t>(std::floor(lo.x)), static_cast<std::int64_t>(std::floor(lo.y)));
-  };
   auto test = [&](std::uint32_t i, std::uint32_t j, std::vector<Crossing>& found) {
     const Segment &a = segments[i], &b = segments[j];
+    if (!looked(a) && !looked(b)) return;
     if (a.piece == b.piece && (a.index > b.index ? a.index - b.index : b.index - a.index) < near) return;
     const glm::dvec3 &ap = p_of(a), &aq = q_of(a), &bp = p_of(b), &bq = q_of(b);
     const glm::dvec2 p(ap), r = glm::dvec2(aq) - p, q(bp), s = glm::dvec2(bq) - q;
@@ -108,8 +118,13 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
 }
 
 CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window,
-                        std::uint32_t pair_window, double touching, const std::vector<std::uint32_t>& segments) {
+                        std::uint32_t pair_window, double touching, const std::vector<std::uint32_t>& segments,
+                        const std::vector<char>& counted_before, const std::vector<char>& counted_after) {
   if (pair_window == 0) pair_window = window;
+  assert(counted_before.empty() || counted_before.size() == before.size());
+  assert(counted_after.empty() || counted_after.size() == after.size());
+  auto counts_before = [&](std::size_t i) { return counted_before.empty() || counted_before[i] != 0; };
+  auto counts_after = [&](std::size_t j) { return counted_after.empty() || counted_after[j] != 0; };
   CrossingChanges changes;
   auto gap = [](std::uint32_t x, std::uint32_t y) { return x > y ? x - y : y - x; };
   auto less = [](const Crossing& x, const Crossing& y) { return order(x) < order(y); };
@@ -125,7 +140,7 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
   for (std::size_t i = 0; i < before.size(); ++i) {
     if (tied(before[i])) {
       left_out[i] = 1;
-      ++changes.ties;
+      changes.ties += counts_before(i) ? 1 : 0;
       continue;
     }
   }
@@ -155,6 +170,7 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
     if (matched_before[c.from] || matched_after[c.to]) continue;
     matched_before[c.from] = matched_after[c.to] = 1;
     if (left_out[c.from]) continue;  // a tie: either way is its way
+    if (!counts_before(c.from) && !counts_after(c.to)) continue;
     if ((before[c.from].depth > 0.0) == (after[c.to].depth > 0.0)) {
       ++changes.kept;
     } else {
@@ -166,7 +182,8 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
   auto by_end = [&](std::uint32_t piece, std::uint32_t segment) {
     return piece < segments.size() && (segment < pair_window || segment + pair_window >= segments[piece]);
   };
-  auto alone = [&](const std::vector<Crossing>& list, const std::vector<char>& skip, std::vector<std::size_t>& at, std::size_t& at_end) {
+  auto alone = [&](const std::vector<Crossing>& list, const std::vector<char>& skip, auto&& counts, std::vector<std::size_t>& at,
+                   std::size_t& at_end) {
     std::vector<char> paired(list.size(), 0);
     std::size_t count = 0;
     for (std::size_t i = 0; i < list.size(); ++i) {
@@ -180,10 +197,12 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
       const bool kink = list[i].piece_a == list[i].piece_b && gap(list[i].segment_a, list[i].segment_b) <= pair_window;
       const bool end = by_end(list[i].piece_a, list[i].segment_a) || by_end(list[i].piece_b, list[i].segment_b);
       if (partner == list.size() && !kink && end) {
-        ++at_end;
+        at_end += counts(i) ? 1 : 0;
       } else if (partner == list.size() && !kink) {
-        ++count;
-        at.push_back(i);
+        if (counts(i)) {
+          ++count;
+          at.push_back(i);
+        }
       } else if (partner != list.size()) {
         paired[i] = paired[partner] = 1;
       }
@@ -193,24 +212,60 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
   std::vector<char> skip_before(before.size()), skip_after(after.size());
   for (std::size_t i = 0; i < before.size(); ++i) {
     skip_before[i] = left_out[i] || matched_before[i];
-    changes.lost += skip_before[i] ? 0 : 1;
+    changes.lost += skip_before[i] || !counts_before(i) ? 0 : 1;
   }
   for (std::size_t j = 0; j < after.size(); ++j) {
     skip_after[j] = matched_after[j];
-    changes.found += skip_after[j] ? 0 : 1;
+    changes.found += skip_after[j] || !counts_after(j) ? 0 : 1;
   }
-  changes.lost_alone = alone(before, skip_before, changes.lost_alone_at, changes.lost_at_end);
-  changes.found_alone = alone(after, skip_after, changes.found_alone_at, changes.found_at_end);
+  changes.lost_alone = alone(before, skip_before, counts_before, changes.lost_alone_at, changes.lost_at_end);
+  changes.found_alone = alone(after, skip_after, counts_after, changes.found_alone_at, changes.found_at_end);
   for (std::size_t i : changes.lost_alone_at) changes.lost_alone_touching += std::abs(before[i].depth) < touching ? 1 : 0;
   for (std::size_t j : changes.found_alone_at) changes.found_alone_touching += std::abs(after[j].depth) < touching ? 1 : 0;
   return changes;
 }
 
 CrossingChanges relaxation_changes(const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn_paths::Piece>& relaxed,
-                                   double thickest, int threads) {
+                                   double thickest, int threads, const std::vector<std::uint32_t>& same_as) {
   std::vector<std::uint32_t> segments;
   for (const auto& piece : laid) segments.push_back(piece.data_points.empty() ? 0 : static_cast<std::uint32_t>(piece.data_points.size() - 1));
-  return compare(crossings(laid, 2, threads), crossings(relaxed, 2, threads), 12, 24, thickest, segments);
+  constexpr std::uint32_t window = 12, pair_window = 24;
+  if (same_as.empty()) return compare(crossings(laid, 2, threads), crossings(relaxed, 2, threads), window, pair_window, thickest, segments);
+  // Per segment: 2 where an end is its own (not a copy), 1 within `context` segments of
+  // one along its piece (every match and partner of a counted crossing lies there), else 0.
+  constexpr std::size_t context = 2 * (window + pair_window);
+  std::vector<std::vector<std::uint8_t>> looked_at(laid.size());
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < laid.size(); ++i) {
+    const std::size_t n = laid[i].data_points.size();
+    auto& looked = looked_at[i];
+    looked.assign(n, 0);  // n - 1 segments, and one to spare
+    for (std::size_t k = 0; k + 1 < n; ++k)
+      looked[k] = same_as[at + k] == at + k || same_as[at + k + 1] == at + k + 1 ? 2 : 0;
+    // Within `context` of an own segment, either way: two passes of the distance to one.
+    std::size_t since = SIZE_MAX;
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+      since = looked[k] == 2 ? 0 : since == SIZE_MAX ? since : since + 1;
+      if (looked[k] == 0 && since <= context) looked[k] = 1;
+    }
+    since = SIZE_MAX;
+    for (std::size_t k = n - 1; k-- > 0;) {
+      since = looked[k] == 2 ? 0 : since == SIZE_MAX ? since : since + 1;
+      if (looked[k] == 0 && since <= context) looked[k] = 1;
+    }
+    at += n;
+  }
+  assert(at == same_as.size());
+  const auto before = crossings(laid, 2, threads, looked_at), after = crossings(relaxed, 2, threads, looked_at);
+  auto counted = [&](const std::vector<Crossing>& list) {
+    std::vector<char> out(list.size());
+    for (std::size_t c = 0; c < list.size(); ++c)
+      out[c] = looked_at[list[c].piece_a][list[c].segment_a] == 2 || looked_at[list[c].piece_b][list[c].segment_b] == 2;
+    return out;
+  };
+  CrossingChanges changes = compare(before, after, window, pair_window, thickest, segments, counted(before), counted(after));
+  for (std::size_t i = 0; i < same_as.size() && !changes.copies_left_out; ++i) changes.copies_left_out = same_as[i] != i;
+  return changes;
 }
 
 }  // namespace knitc::measure

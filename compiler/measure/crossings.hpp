@@ -21,8 +21,10 @@ struct Crossing {
 // Every crossing of two segments' projections onto the xy plane, but of two segments of
 // one piece less than `near` data points apart along it (a yarn's own bends). Ordered by
 // (piece_a, piece_b, segment_a, segment_b). A grid of cells one segment long: linear.
-// threads >= 1 (0: every core); the result is the same for any count.
-std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near = 2, int threads = 1);
+// threads >= 1 (0: every core); the result is the same for any count. `looked_at`, empty
+// or per piece one flag per data point: only crossings where a segment's flag is not 0.
+std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, std::uint32_t near = 2, int threads = 1,
+                                const std::vector<std::vector<std::uint8_t>>& looked_at = {});
 
 struct CrossingChanges {
   std::size_t kept = 0;     // matched, same yarn in front
@@ -45,6 +47,9 @@ struct CrossingChanges {
   // lengths): an end sliding past another yarn unmakes or makes one crossing alone, with
   // nobody passing through anybody. Not counted in lost_alone or found_alone.
   std::size_t lost_at_end = 0, found_at_end = 0;
+  // Counted only where a segment is not a copy of the tile's (relaxation_changes's
+  // same_as): the copies cross as their first copy does.
+  bool copies_left_out = false;
 };
 
 // Matches crossings before to crossings after between the same two pieces within
@@ -54,9 +59,12 @@ struct CrossingChanges {
 // Reidemeister's second kind makes or undoes can lie further apart than one crossing
 // slides, as where a float slides under the legs of two neighbouring loops.
 // `segments`, if given, is each piece's number of segments: its ends are free, so a lone
-// change near one is an end's (lost_at_end, found_at_end).
+// change near one is an end's (lost_at_end, found_at_end). `counted_before` and
+// `counted_after`, empty or one flag per crossing: the others only match and pair with
+// the counted, and are not counted themselves (a matched pair counts if either does).
 CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<Crossing>& after, std::uint32_t window,
-                        std::uint32_t pair_window = 0, double touching = 0.0, const std::vector<std::uint32_t>& segments = {});
+                        std::uint32_t pair_window = 0, double touching = 0.0, const std::vector<std::uint32_t>& segments = {},
+                        const std::vector<char>& counted_before = {}, const std::vector<char>& counted_after = {});
 
 // The relaxation's changes to the knot diagram: `laid`, the refined layout's chains
 // (relax::refine), and `relaxed`, the same points moved. Matched within 12 segments
@@ -65,8 +73,12 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
 // 3 mm apart along their yarn); `thickest`, the thickest free diameter, mm: where the
 // yarns lay further apart in depth, a crossing lost or found alone slid away or in. A
 // lone change within 24 segments of a yarn's end is the end's (a tail drawn back).
+// `same_as`, empty or per point (relax::Relaxed::same_as): a point of the held interior
+// whose surroundings, laid and relaxed, are another's moved by whole tiles. Only crossings
+// at a segment with an end of its own are counted (the tile's copies cross as their first
+// copy does), matched against those within reach along the yarn.
 CrossingChanges relaxation_changes(const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn_paths::Piece>& relaxed,
-                                   double thickest, int threads = 1);
+                                   double thickest, int threads = 1, const std::vector<std::uint32_t>& same_as = {});
 
 // The crossings a yarn passing through another would explain: flipped, or lost or found
 // alone where the two yarns touched.
