@@ -37,14 +37,6 @@ inline constexpr double deeper_by_tiling = 0.1;
 // fabric's loops; none for a fabric with tucks. Linear in the fabric for each repeat size tried (at most 64 each way).
 std::optional<Repeat> find_repeat(const layout::Layout& layout);
 
-// Whether `start` (a tiled start: every point of `laid`'s pieces, in order, held or not)
-// leaves two cores deeper into each other, among the pairs with a point free, than
-// deeper_by_tiling core diameters past the deepest the layout `laid` has: tiling jumps the
-// yarn to the tile's places with no sweep between to keep its crossings, and a deep
-// overlap pushed out may come out on the wrong side.
-bool deeper_than_laid(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn::Size>& sizes,
-                      const Start& start, int threads);
-
 // Relaxes `chains` (refined, see refine) by `repeat` with free edges; nothing if the
 // pieces do not follow the layout's loops as the tile needs.
 std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& chains,

@@ -1,4 +1,5 @@
 #include "relax/strips.hpp"
+#include "relax/tiled_start.hpp"
 
 #include <algorithm>
 #include <cmath>
