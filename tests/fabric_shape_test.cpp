@@ -11,10 +11,7 @@ namespace knitc {
 namespace {
 
 CompileOptions relaxed_centrelines(relax::Boundary boundary) {
-  CompileOptions o;
-  o.view = View::centreline;
-  o.chord_tolerance = 0.05;
-  o.relax = true;
+  CompileOptions o = test::centrelines(true);
   o.relaxation.boundary = boundary;
   return o;
 }

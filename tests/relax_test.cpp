@@ -47,13 +47,7 @@ std::vector<yarn::Size> sizes(const Pattern& p) {
 }
 
 // Centrelines only: the relaxation's figures without the cost of the tubes.
-CompileOptions centrelines(bool relax) {
-  CompileOptions o;
-  o.view = View::centreline;
-  o.chord_tolerance = 0.05;
-  o.relax = relax;
-  return o;
-}
+using test::centrelines;
 
 class Relaxed : public testing::TestWithParam<std::string> {};
 

@@ -16,10 +16,7 @@ namespace knitc {
 namespace {
 
 CompileOptions centrelines(bool strips) {
-  CompileOptions o;
-  o.view = View::centreline;
-  o.chord_tolerance = 0.05;
-  o.relax = true;
+  CompileOptions o = test::centrelines(true);
   o.relaxation.by_strips = strips;
   return o;
 }

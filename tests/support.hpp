@@ -95,4 +95,14 @@ inline Pattern jersey(int stitches, int rows, double w = 4.0, double h = 4.2, do
   return runtime::run_pattern(jersey_source(stitches, rows, w, h, t, d), "jersey.lua").pattern;
 }
 
+// The yarns' centrelines only (no tube mesh), at a coarse chord tolerance: what the
+// relaxation tests measure. Relaxed or not.
+inline CompileOptions centrelines(bool relax) {
+  CompileOptions o;
+  o.view = View::centreline;
+  o.chord_tolerance = 0.05;
+  o.relax = relax;
+  return o;
+}
+
 }  // namespace knitc::test
