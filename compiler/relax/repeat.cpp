@@ -75,6 +75,18 @@ int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
 }  // namespace
 
+int periodic_run(const std::vector<glm::dvec3>& points, std::size_t from, std::size_t period, double width, double close) {
+  if (from < run_handles || from + period + run_handles > points.size()) return 0;
+  const glm::dvec3 step = points[from + period] - points[from];
+  const int across = static_cast<int>(std::lround(step.x / width));
+  if ((across != 1 && across != -1) || glm::distance(step, glm::dvec3(across * width, 0.0, 0.0)) >= close) return 0;
+  for (std::size_t h = 1; h <= run_handles; ++h)
+    if (glm::distance(points[from - h] + step, points[from + period - h]) >= close ||
+        glm::distance(points[from + period + h - 1] - step, points[from + h - 1]) >= close)
+      return 0;
+  return across;
+}
+
 std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   if (layout.knitting != Knitting::flat || layout.courses < 8 || layout.wales < 8) return std::nullopt;
   // Tucks: tiled, the held loops and the tuck loops in them lose crossings (half cardigan
@@ -177,17 +189,10 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
                               layout.loops[static_cast<std::size_t>(piece.loops[end])].course == course;
       if (neighbours) {
         const std::size_t period = piece.loop_first[end] - from;
-        const glm::dvec3 step = piece.data_points[from + period] - piece.data_points[from];
-        across = static_cast<int>(std::lround(step.x / (repeat.wales * layout.loop_width)));
-        const std::size_t want = 8;
-        bool periodic = (across == 1 || across == -1) && from >= want && from + period + want <= piece.data_points.size() &&
-                        glm::distance(step, glm::dvec3(across * repeat.wales * layout.loop_width, 0.0, 0.0)) < 1e-3 * layout.loop_width;
-        for (std::size_t h = 1; periodic && h <= want; ++h)
-          periodic = glm::distance(piece.data_points[from - h] + step, piece.data_points[from + period - h]) < 1e-3 * layout.loop_width &&
-                     glm::distance(piece.data_points[from + period + h - 1] - step, piece.data_points[from + h - 1]) < 1e-3 * layout.loop_width;
-        if (periodic) {
+        across = periodic_run(piece.data_points, from, period, repeat.wales * layout.loop_width, 1e-3 * layout.loop_width);
+        if (across != 0) {
           n = period;
-          handles = want;
+          handles = run_handles;
         }
       }
       yarn_paths::Piece run;

@@ -37,6 +37,16 @@ inline constexpr double deeper_by_tiling = 0.1;
 // fabric's loops; none for a fabric with tucks. Linear in the fabric for each repeat size tried (at most 64 each way).
 std::optional<Repeat> find_repeat(const layout::Layout& layout);
 
+// Points either side of a period of a course's yarn kept as its images in the periods
+// before and after (a tile's run, a strip's).
+inline constexpr std::size_t run_handles = 8;
+
+// Whether `points[from, from + period)` is one period of a course's yarn repeating
+// `width` mm across: the step to `from + period` is (+-width, 0, 0), and run_handles points
+// on either side are the period's images, each to within `close` mm. +1 or -1, the step's
+// direction; 0 if not.
+int periodic_run(const std::vector<glm::dvec3>& points, std::size_t from, std::size_t period, double width, double close);
+
 // Relaxes `chains` (refined, see refine) by `repeat` with free edges; nothing if the
 // pieces do not follow the layout's loops as the tile needs.
 std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& chains,

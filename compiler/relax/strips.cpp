@@ -86,21 +86,14 @@ bool make_strip(const Fabric& f, const Block& b, glm::dvec2 period, const Start&
       std::size_t from = piece.loop_first[j], n = piece.loop_last[end - 1] + 1 - from, handles = 0;
       int across = 0;
       if (b.across) {
-        // One period of the course's yarn and `want` points either side: its images in the
-        // periods before and after, kept there as it moves (as the tile's are).
-        const std::size_t want = 8;
+        // One period of the course's yarn and its images in the periods before and after,
+        // kept there as it moves (as the tile's are).
         if (j == 0 || end >= piece.loops.size() || course_of(j - 1) != course_of(j) || course_of(end) != course_of(j)) return false;
         const std::size_t p = piece.loop_first[end] - from;
-        const glm::dvec3 step = piece.data_points[from + p] - piece.data_points[from];
-        across = static_cast<int>(std::lround(step.x / width));
-        bool periodic = (across == 1 || across == -1) && from >= want && from + p + want <= piece.data_points.size() &&
-                        glm::distance(step, glm::dvec3(across * width, 0.0, 0.0)) < 1e-3 * layout.loop_width;
-        for (std::size_t h = 1; periodic && h <= want; ++h)
-          periodic = glm::distance(piece.data_points[from - h] + step, piece.data_points[from + p - h]) < 1e-3 * layout.loop_width &&
-                     glm::distance(piece.data_points[from + p + h - 1] - step, piece.data_points[from + h - 1]) < 1e-3 * layout.loop_width;
-        if (!periodic) return false;
+        across = periodic_run(piece.data_points, from, p, width, 1e-3 * layout.loop_width);
+        if (across == 0) return false;
         n = p;
-        handles = want;
+        handles = run_handles;
       } else {
         // A selvedge's run: in from the held interior, round the turn, back out into it.
         auto held = [&](std::size_t k) { return start.held[f.first[i] + piece.loop_first[k]] != 0; };
