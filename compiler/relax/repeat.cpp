@@ -19,10 +19,8 @@ namespace knitc::relax {
 
 namespace {
 
-using Grid = LoopGrid;
-
-Grid grid_of(const layout::Layout& layout) {
-  Grid g{layout.courses, layout.wales, {}};
+LoopGrid grid_of(const layout::Layout& layout) {
+  LoopGrid g{layout.courses, layout.wales, {}};
   g.at.assign(static_cast<std::size_t>(g.courses) * static_cast<std::size_t>(g.wales), -1);
   for (std::size_t i = 0; i < layout.loops.size(); ++i) {
     const auto& l = layout.loops[i];
@@ -56,7 +54,7 @@ struct Interior {
 };
 
 // The smallest period along one axis: every interior loop repeats `period` loops on.
-int smallest_period(const layout::Layout& layout, const Grid& g, const Interior& in, bool across) {
+int smallest_period(const layout::Layout& layout, const LoopGrid& g, const Interior& in, bool across) {
   const int span = across ? in.wale_to - in.wale_from + 1 : in.course_to - in.course_from + 1;
   for (int period = 1; period <= std::min(64, span / 2); ++period) {
     bool all = true;
@@ -104,7 +102,7 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   for (const auto& edges : layout.slot_x)
     for (std::size_t k = 1; k < edges.size(); ++k)
       if (std::abs(edges[k] - edges[k - 1] - layout.loop_width) > 1e-9 * layout.loop_width) return std::nullopt;
-  const Grid g = grid_of(layout);
+  const LoopGrid g = grid_of(layout);
   const Interior in{2, layout.courses - 3, 2, layout.wales - 3};
   const int p = smallest_period(layout, g, in, true), q = smallest_period(layout, g, in, false);
   if (p == 0 || q == 0) return std::nullopt;
@@ -123,7 +121,7 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
 
 std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& chains,
                                        const std::vector<yarn::Size>& sizes, const Options& options, const Repeat& repeat) {
-  const Grid g = grid_of(layout);
+  const LoopGrid g = grid_of(layout);
   // Which piece, and which of its loops, each loop is.
   std::vector<std::pair<long, long>> owner(layout.loops.size(), {-1, -1});
   for (std::size_t i = 0; i < chains.size(); ++i)
