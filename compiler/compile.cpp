@@ -152,8 +152,8 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   }
   if (estimate > static_cast<double>(max_vertices) && !may_tile(options, pattern, fabric.layout.knitting)) too_many_vertices(pattern, estimate, "about ");
 
-  // Relaxed by a repeat: per point, the copy of the tile it repeats (relax::Relaxed).
-  std::vector<std::uint32_t> same_as;
+  // Relaxed by a repeat: per piece and point, the copy of the tile it repeats (relax::Relaxed).
+  std::vector<std::vector<std::uint32_t>> same_as;
   if (options.relax) {
     report(options, "relax", 0.0);
     std::vector<yarn::Size> sizes;
@@ -196,36 +196,19 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
         retry(whole, true);
       }
     }
+    same_as = relax::same_as_by_piece(relaxed.pieces, relaxed.same_as);
     paths = std::move(relaxed.pieces);
-    same_as = std::move(relaxed.same_as);
     fabric.relaxed = true;
     fabric.relaxation = relaxed.stats;
     report(options, "relax", 1.0);
   }
 
-  // Each piece's copies among its own points (the curves copy only within a piece).
-  std::vector<std::vector<std::uint32_t>> piece_same_as(paths.size());
-  if (!same_as.empty()) {
-    std::size_t offset = 0;
-    for (std::size_t i = 0; i < paths.size(); ++i) {
-      const std::size_t n = paths[i].data_points.size();
-      auto& local = piece_same_as[i];
-      local.resize(n);
-      for (std::size_t k = 0; k < n; ++k) {
-        const std::uint32_t g = same_as[offset + k];
-        local[k] = g >= offset && g < offset + n ? static_cast<std::uint32_t>(g - offset) : static_cast<std::uint32_t>(k);
-      }
-      offset += n;
-    }
-    assert(offset == same_as.size());
-    same_as = {};
-  }
   fabric.pieces.resize(paths.size());
   std::atomic<std::size_t> traced{0};
   const std::size_t step = std::max<std::size_t>(1, paths.size() / 100);
   parallel_for(paths.size(), thread_count(options.threads), [&](std::size_t i) {
     const Yarn& yarn = pattern.yarns[paths[i].yarn];
-    fabric.pieces[i] = curves::trace(std::move(paths[i]), yarn, curve, piece_same_as[i]);
+    fabric.pieces[i] = curves::trace(std::move(paths[i]), yarn, curve, same_as.empty() ? std::span<const std::uint32_t>{} : same_as[i]);
     if (const std::size_t done = ++traced; done % step == 0)
       report(options, "curves", static_cast<double>(done) / static_cast<double>(paths.size()));
   });

@@ -71,11 +71,13 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
   const int threads = thread_count(options.threads);
   const std::vector<std::size_t> from = copied_spans(breaks, same_as, piece.path.data_points);
   std::vector<std::vector<double>> spans(breaks.size() - 1), steps(spans.size());
-  parallel_for(spans.size(), threads, [&](std::size_t k) {
-    if (from[k] != k) return;
+  auto sample = [&](std::size_t k) {
     spans[k] = sweep::sample_parameters(piece.curve.curve, u[breaks[k]], u[breaks[k + 1]], tolerance, 0.5 * d, max_step);
     steps[k].resize(spans[k].size() - 1);
     nurbs::segment_lengths(piece.curve.curve, spans[k], steps[k]);
+  };
+  parallel_for(spans.size(), threads, [&](std::size_t k) {
+    if (from[k] == k) sample(k);
   });
   parallel_for(spans.size(), threads, [&](std::size_t k) {
     const std::size_t r = from[k];
@@ -88,13 +90,8 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
     // The moved parameters still ascend inside [a, b] (else the span is sampled afresh).
     bool ascending = true;
     for (std::size_t i = 1; i < spans[k].size(); ++i) ascending = ascending && spans[k][i - 1] < spans[k][i];
-    if (ascending) {
-      steps[k] = steps[r];
-      return;
-    }
-    spans[k] = sweep::sample_parameters(piece.curve.curve, a, b, tolerance, 0.5 * d, max_step);
-    steps[k].resize(spans[k].size() - 1);
-    nurbs::segment_lengths(piece.curve.curve, spans[k], steps[k]);
+    if (ascending) steps[k] = steps[r];
+    else sample(k);
   });
   piece.samples.push_back(u[0]);
   piece.arc_length.push_back(0.0);

@@ -233,6 +233,23 @@ double length_change(const Chains& c) {
 
 }  // namespace
 
+std::vector<std::vector<std::uint32_t>> same_as_by_piece(const std::vector<yarn_paths::Piece>& pieces,
+                                                         const std::vector<std::uint32_t>& same_as) {
+  std::vector<std::vector<std::uint32_t>> out(same_as.empty() ? 0 : pieces.size());
+  std::size_t offset = 0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const std::size_t n = pieces[i].data_points.size();
+    out[i].resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t g = same_as[offset + k];
+      out[i][k] = g >= offset && g < offset + n ? static_cast<std::uint32_t>(g - offset) : static_cast<std::uint32_t>(k);
+    }
+    offset += n;
+  }
+  assert(same_as.empty() || offset == same_as.size());
+  return out;
+}
+
 Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<yarn::Size>& sizes,
               const Options& options) {
   auto relaxed = [&]() -> Relaxed {

@@ -108,6 +108,11 @@ struct Relaxed {
   std::vector<std::uint32_t> same_as;
 };
 
+// `same_as` (Relaxed's) per piece of `pieces`, in the piece's own indices: a point whose
+// first copy lies in another piece is its own. Empty when same_as is.
+std::vector<std::vector<std::uint32_t>> same_as_by_piece(const std::vector<yarn_paths::Piece>& pieces,
+                                                         const std::vector<std::uint32_t>& same_as);
+
 // The pieces with points inserted on each piece's interpolating curve (chord-length
 // parametrisation) so that no two consecutive points are more than spacing x d apart;
 // the old points are kept and loop_first follows them. diameter: mm, per Pattern::yarns
