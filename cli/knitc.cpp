@@ -353,8 +353,9 @@ void add_compile_options(CLI::App* cmd, Args& a) {
                   "close-ups (docs/yarn.md, \"Fibres\")")
       ->transform(CLI::CheckedTransformer(sections, CLI::ignore_case));
   cmd->add_option("--textures", a.compile.textures,
-                  "on (default, but for view): bake each yarn's plies and fibres into normal, occlusion and colour maps "
-                  "on its tube (docs/yarn.md, \"Baked textures\"); off: plain tubes")
+                  "on (default, but for view, and for a fabric whose loops span under 16 px of a full view): bake each "
+                  "yarn's plies and fibres into normal, occlusion and colour maps on its tube (docs/yarn.md, \"Baked "
+                  "textures\"); off: plain tubes")
       ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"on", true}, {"off", false}}, CLI::ignore_case));
   const std::map<std::string, knitc::nurbs::Parametrisation> params{
       {"chord", knitc::nurbs::Parametrisation::chord_length},
@@ -584,6 +585,8 @@ void settle_defaults(Commands& c) {
                                                 : knitc::Instancing::automatic;
     const bool given = cmd->get_option("--sides")->count() != 0 || cmd->get_option("--tolerance")->count() != 0;
     args->compile.density_from_view = !args->quality && !given;
+    const CLI::Option* textures = cmd->get_option_no_throw("--textures");
+    args->compile.textures_from_view = textures == nullptr || textures->count() == 0;
     if (!args->quality) continue;
     const knitc::Density d = knitc::density(*args->quality);
     if (cmd->get_option("--sides")->count() == 0) args->compile.sides = d.sides;

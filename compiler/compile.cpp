@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "parallel.hpp"
 #include "fibres/bake.hpp"
@@ -30,8 +31,13 @@ ViewDensity density_for_view(const layout::Layout& layout, int pixels) {
   if (loop >= 40.0) return {density(Quality::normal), loop};
   if (loop >= 16.0) return {{8, 0.025}, loop};
   // A loop a few pixels across: a chord error of about half a pixel (a loop's width over
-  // 8 on the yarn's diameter, 2 / pixels of it), never finer than draft, at most a quarter.
-  return {{6, std::clamp(2.0 / loop, 0.05, 0.25)}, loop};
+  // 8 on the yarn's diameter, 2 / pixels of it), never finer than draft, at most a quarter;
+  // round the ring, the fewest sides whose chord error (the sagitta of a side, (1 - cos
+  // pi/n) / 2 of the diameter) is within it.
+  const double tolerance = std::clamp(2.0 / loop, 0.05, 0.25);
+  int sides = 4;
+  while ((1.0 - std::cos(std::numbers::pi / sides)) / 2.0 > tolerance) ++sides;
+  return {{sides, tolerance}, loop, false};
 }
 
 namespace {
@@ -133,8 +139,10 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     const ViewDensity view = density_for_view(fabric.layout);
     options.sides = view.density.sides;
     options.chord_tolerance = view.density.chord_tolerance;
-    char text[160];
-    std::snprintf(text, sizeof text, "from the view: a loop spans %.0f px of a %d px full view", view.loop_pixels, view_pixels);
+    if (given.textures_from_view) options.textures = view.maps;
+    char text[200];
+    std::snprintf(text, sizeof text, "from the view: a loop spans %.0f px of a %d px full view%s", view.loop_pixels, view_pixels,
+                  given.textures_from_view && given.textures && !view.maps ? " (no baked maps: their detail is under a pixel)" : "");
     fabric.density_choice = text;
   } else {
     fabric.density_choice = "as given";

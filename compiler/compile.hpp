@@ -37,13 +37,17 @@ Density density(Quality quality);  // draft: 6, 5%; normal: 12, 1%; fine: 24, 0.
 
 // The density a fabric needs seen whole at `pixels` across (the longer side of the view):
 // how many pixels a loop spans there picks it. A loop of 40 pixels or more is drawn at
-// normal quality, of 16 or more at 8 sides and 2.5%, smaller at 6 sides and a tolerance
-// of 2 / pixels (5% to 25%: about half a pixel): a sweater front is not meshed at a swatch
-// close-up's density.
+// normal quality, of 16 or more at 8 sides and 2.5%. Smaller, the chord error along the
+// yarn is 2 / pixels of its diameter (5% to 25%: about half a pixel), and the ring has the
+// fewest sides (at least 4) whose own chord error is no larger: a sweater front is not
+// meshed at a swatch close-up's density. Below 16 pixels a loop's yarn is some 4 pixels
+// across and its plies and fibres under a pixel, so the baked maps would show only their
+// average: `maps` says whether they are worth drawing.
 inline constexpr int view_pixels = 1920;
 struct ViewDensity {
   Density density;
   double loop_pixels;
+  bool maps = true;
 };
 ViewDensity density_for_view(const layout::Layout& layout, int pixels = view_pixels);
 
@@ -75,6 +79,9 @@ struct CompileOptions {
   // (fibres/bake.hpp) for a surface mesh of tubes; the programs turn it on unless
   // --textures off. Off here, for the tests that count a mesh's bytes.
   bool textures = false;
+  // With density_from_view: the maps only where the view shows them (ViewDensity::maps);
+  // what the programs do unless --textures is given.
+  bool textures_from_view = false;
   // Called with a stage's name and how far it is, in [0, 1], from any thread (so it must
   // be thread-safe); for a progress display. It never changes the result.
   std::function<void(const char* stage, double fraction)> progress;

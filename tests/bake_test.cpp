@@ -232,5 +232,23 @@ TEST(Bake, TheTracedPreviewDrawsTheMaps) {
   EXPECT_NE(render::traced_png(plain.mesh, trace), render::traced_png(flat, trace));
 }
 
+// Seen whole, a fabric whose loops span a few pixels shows its plies under a pixel: the
+// programs write it as plain tubes, unless --textures on (or a density) is asked for.
+TEST(Bake, AFabricSeenWholeAtAFewPixelsALoopHasNoMapsUnlessAsked) {
+  const auto dir = test::scratch_dir("bake");
+  const std::string script = (dir / "wide.lua").string(), out = (dir / "wide.glb").string();
+  test::write_text(script, test::jersey_source(130, 90));
+  const auto stats = [&](const std::string& extra) {
+    const auto r = test::run_knitc("build '" + script + "' -o '" + out + "' --relax off --stats " + extra);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return r.err;
+  };
+  const std::string plain = stats("");
+  EXPECT_NE(plain.find("no baked maps"), std::string::npos) << plain;
+  EXPECT_EQ(plain.find("\ntextures "), std::string::npos) << plain;
+  EXPECT_NE(stats("--textures on").find("\ntextures "), std::string::npos);
+  EXPECT_NE(stats("--quality draft").find("\ntextures "), std::string::npos);
+}
+
 }  // namespace
 }  // namespace knitc

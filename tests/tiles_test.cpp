@@ -187,11 +187,21 @@ TEST(Tiles, TheDensityFollowsHowLargeALoopIsInAFullView) {
   const auto swatch = density_for_view(layout::lay_out(test::jersey(20, 24)));
   EXPECT_EQ(swatch.density.sides, 12);  // a swatch close-up: normal quality
   EXPECT_GT(swatch.loop_pixels, 40.0);
+  EXPECT_TRUE(swatch.maps);
   const auto front = density_for_view(layout::lay_out(test::jersey(150, 250)));
-  EXPECT_EQ(front.density.sides, 6);  // a sweater front: a loop is a few pixels
-  EXPECT_LT(front.loop_pixels, 16.0);
+  EXPECT_LT(front.loop_pixels, 16.0);  // a sweater front: a loop is a few pixels
+  EXPECT_EQ(front.density.sides, 4);   // a square's chord error, 15% of d, within the 24% along the yarn
+  EXPECT_NEAR(front.density.chord_tolerance, 2.0 / front.loop_pixels, 1e-12);
+  EXPECT_FALSE(front.maps);  // its plies under a pixel
   const auto middle = density_for_view(layout::lay_out(test::jersey(80, 60)));
   EXPECT_EQ(middle.density.sides, 8);
+  EXPECT_TRUE(middle.maps);
+  // Between: a loop of 14 pixels takes 2/14 = 14% along the yarn, past a square's 15%, so
+  // the ring is a pentagon's (10%).
+  const auto between = density_for_view(layout::lay_out(test::jersey(137, 100)));
+  ASSERT_GT(between.loop_pixels, 13.5);
+  ASSERT_LT(between.loop_pixels, 14.5);
+  EXPECT_EQ(between.density.sides, 5);
 }
 
 // The files, as written by the program and read by tinygltf: the instanced file's tile
