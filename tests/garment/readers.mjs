@@ -43,7 +43,7 @@ if (shown.status !== 0) {
 const results = shown.stdout.trim().split('\n').map((line) => JSON.parse(line));
 files.forEach((f, i) => {
   const r = results[i];
-  console.log(`${f.name}: loaded in ${r.load_ms.toFixed(0)} ms, first frame in ${r.frame_ms.toFixed(0)} ms, ` +
+  console.log(`${f.name}: loaded in ${r.load_ms.toFixed(0)} ms, first frame in ${r.frame_ms.toFixed(0)} ms, next in ${r.next_frame_ms.toFixed(0)} ms, ` +
               `${r.triangles} triangles drawn, ${r.instances} instances (${r.webgl})`);
   check(f.instanced === f.knitc.mesh.startsWith('instanced'), `${f.name}: knitc chose ${f.instanced ? 'instanced' : 'flat'}`);
   check(r.instanced_meshes === (f.instanced ? 1 : 0), `${f.name}: ${r.instanced_meshes} instanced meshes`);
