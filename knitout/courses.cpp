@@ -123,11 +123,22 @@ Imported import_program(const Program& program, const Profile& profile) {
       throw KnitoutError(located(program, first, message, hint), first.line);
     };
     std::vector<Position>& pos = raw.positions;
+    // A tube's live stitches by layer (its wale's: the bottom loop's, not a tuck's on it),
+    // whichever bed holds them now.
+    auto front_layer = [&](const Position& q) { return cut.front_layer[static_cast<std::size_t>(q.pile.front())] != 0; };
     std::sort(pos.begin(), pos.end(), [&](const Position& a, const Position& b) {
-      if (round && front(a.needle.bed) != front(b.needle.bed)) return front(a.needle.bed);
-      if (round && !front(a.needle.bed)) return a.x > b.x;
+      if (round && front_layer(a) != front_layer(b)) return front_layer(a);
+      if (round && !front_layer(a)) return a.x > b.x;
       return a.x < b.x;
     });
+    // A stitch seen as a purl: flat, one on the back bed; round, one whose loop (or the
+    // needle holding it) is on its layer's other bed.
+    auto purl_at = [&](const Position& q, int loop) {
+      if (!round) return !front(q.needle.bed);
+      const std::size_t l = static_cast<std::size_t>(loop >= 0 ? loop : q.pile.back());
+      const Bed bed = loop >= 0 ? loops[l].needle.bed : q.needle.bed;
+      return front(bed) != (cut.front_layer[l] != 0);
+    };
     const int mine = static_cast<int>(ci);
     auto is_new = [&](int l) { return course_of[static_cast<std::size_t>(l)] == mine; };
     if (ci == 0) {  // the cast-on: loops on empty needles
@@ -245,7 +256,7 @@ Imported import_program(const Program& program, const Profile& profile) {
     for (std::size_t j = 0; j < pos.size();) {
       const Info& f = info[j];
       while (next < live && !used[next]) emit(bound[next] ? bo : drop, course_yarn), ++next;
-      const bool purl_side = !round && !front(pos[j].needle.bed);
+      const bool purl_side = purl_at(pos[j], f.loop);
       if (f.kind == Kind::partner) {
         // A split's old loops beside its new loop: an increase, both loops through the stitch.
         if (j + 1 < pos.size() && info[j + 1].kind == Kind::made && info[j + 1].stitches == f.stitches &&
@@ -362,7 +373,7 @@ Imported import_program(const Program& program, const Profile& profile) {
       for (std::size_t j = 0; j < pos.size(); ++j) {
         const Info& f = info[j];
         const std::size_t n = f.kind == Kind::partner ? 0 : std::min<std::size_t>({f.stitches.size(), 3, live - taken});
-        const bool purl_side = !round && !front(pos[j].needle.bed);
+        const bool purl_side = purl_at(pos[j], f.loop);
         const int yarn = f.loop >= 0 ? yarn_for(f.loop) : course_yarn;
         StitchId s = yo;
         if (n == 1) s = f.kind == Kind::made ? (purl_side ? p : k) : f.kind == Kind::tucked ? tuck : held;

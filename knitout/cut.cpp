@@ -140,16 +140,68 @@ Cut cut_courses(const Program& program, Machine& machine) {
     courses = std::move(runs);
   }
 
-  // Flat or round: a tube's rounds knit the front bed one way and the back bed the other.
+  // Each loop's layer, were the fabric a tube: its wale's, the layer of the loop it was
+  // pulled through (the top one); a loop through none (cast on, a tuck, a yarn-over) is of
+  // the bed it was made on. Not the bed of a loop pulled through another: a layer's purls
+  // are knitted on the other bed, and a half-gauge tube parks a layer's loops on either.
+  const std::vector<Loop>& loops = machine.loops();
+  std::vector<char>& layer = cut.front_layer;
+  layer.resize(loops.size());
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const Loop& loop = loops[l];
+    layer[l] = loop.parents.empty() ? front(loop.needle.bed) : layer[static_cast<std::size_t>(loop.parents.back())];
+  }
+  // A tube's two passes cut apart by transfers between them (a half-gauge tube parks one
+  // layer's loops, or moves its purls, between its passes): one carrier each, one direction
+  // each, the two opposite and of the two layers, the second knitting through none of the
+  // first's loops. They are one round.
+  {
+    auto one_pass = [&](const RawCourse& c, int& carrier, int& direction, bool& side) {
+      if (c.made.empty()) return false;
+      const Loop& head = loops[static_cast<std::size_t>(c.made.front())];
+      carrier = head.carriers.front(), direction = head.direction, side = layer[static_cast<std::size_t>(c.made.front())] != 0;
+      for (int l : c.made) {
+        const Loop& loop = loops[static_cast<std::size_t>(l)];
+        if (loop.carriers.front() != carrier || loop.direction != direction || (layer[static_cast<std::size_t>(l)] != 0) != side) return false;
+      }
+      return direction != 0;
+    };
+    std::vector<RawCourse> merged;
+    for (std::size_t c = 0; c < courses.size(); ++c) {
+      int ca = 0, da = 0, cb = 0, db = 0;
+      bool sa = false, sb = false;
+      bool pair = c + 1 < courses.size() && one_pass(courses[c], ca, da, sa) && one_pass(courses[c + 1], cb, db, sb) && ca == cb &&
+                  da == -db && sa != sb;
+      for (std::size_t i = 0; pair && i < courses[c + 1].made.size(); ++i)
+        for (int q : loops[static_cast<std::size_t>(courses[c + 1].made[i])].parents)
+          pair = pair && course_of[static_cast<std::size_t>(q)] != static_cast<int>(c);
+      if (!pair) {
+        merged.push_back(std::move(courses[c]));
+      } else {
+        RawCourse both = std::move(courses[c]);
+        RawCourse& second = courses[c + 1];
+        both.made.insert(both.made.end(), second.made.begin(), second.made.end());
+        both.went.insert(both.went.end(), second.went.begin(), second.went.end());
+        both.positions = std::move(second.positions);
+        merged.push_back(std::move(both));
+        ++c;
+      }
+      for (int l : merged.back().made) course_of[static_cast<std::size_t>(l)] = static_cast<int>(merged.size()) - 1;
+    }
+    courses = std::move(merged);
+  }
+
+  // Flat or round: a tube's rounds knit the front layer one way and the back layer the
+  // other, on both beds.
   int rounds = 0, sheets = 0;
   for (const RawCourse& c : courses) {
     bool f = false, b = false, tube = false;
-    std::map<int, std::pair<int, int>> by_carrier;  // carrier -> (front direction, back direction)
+    std::map<int, std::pair<int, int>> by_carrier;  // carrier -> (front layer's direction, back layer's)
     for (int l : c.made) {
-      const Loop& loop = machine.loops()[static_cast<std::size_t>(l)];
+      const Loop& loop = loops[static_cast<std::size_t>(l)];
       auto& d = by_carrier[loop.carriers.front()];
       (front(loop.needle.bed) ? f : b) = true;
-      (front(loop.needle.bed) ? d.first : d.second) = loop.direction;
+      (layer[static_cast<std::size_t>(l)] != 0 ? d.first : d.second) = loop.direction;
     }
     for (const auto& [carrier, d] : by_carrier) tube = tube || (d.first != 0 && d.second != 0 && d.first != d.second);
     // Weighed by loops: a bind-off's steps (split on one bed, knit on the other) are not rounds.

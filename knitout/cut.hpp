@@ -68,11 +68,16 @@ inline double across(Needle n, double racking) { return front(n.bed) ? n.index :
 
 // What the machine knitted, in courses: a course ends where a needle would be worked
 // twice, where a carrier turns back onto loops along the bed it came, or where it reaches
-// a stitch it already passed; a bind-off's steps are one course.
+// a stitch it already passed; a bind-off's steps are one course, and so are a tube's two
+// passes when transfers between them cut it in two (each a layer, the second not
+// knitted through the first).
 struct Cut {
   std::vector<RawCourse> courses;
   std::vector<int> course_of;  // per loop: its course
   bool round = false;          // knitted as a tube
+  // Per loop: whether it is of the tube's front layer, were the fabric a tube (its wale's:
+  // the top loop it was pulled through, else the bed it was made on).
+  std::vector<char> front_layer;
   int last_drop_line = 0;      // the last drop after the last course
   long long front_loops = 0, back_loops = 0;
   std::vector<std::string> warnings;

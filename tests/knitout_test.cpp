@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <sstream>
 
 #include "knit_graph/knit_graph.hpp"
 #include "knitout.hpp"
@@ -224,6 +225,31 @@ TEST(KnitoutImport, RealProgramsSayTheirStructures) {
   const Pattern dec = import_file(real("ks-dec_triangle.k")).pattern;
   EXPECT_EQ(dec.cast_on, 22);
   EXPECT_EQ(produced(dec.courses.back()), 2);
+}
+
+// A half-gauge tube whose knit/purl image moves loops between the beds: its front layer
+// is knitted going left on the even needles, its back layer going right on the odd ones,
+// each layer's purls on the other bed, and between the passes the loops are parked on
+// either bed. Read in the round, every course exactly, 201 stitches round; its purls are
+// the knits on a layer's other bed, counted here from the program's text.
+TEST(KnitoutImport, AHalfGaugeTubeWithPurlsIsReadInTheRoundByItsLayers) {
+  KNITC_NEED_SHARED(real("cmu-image-tube-diag.k"));
+  const std::string text = test::read_text(real("cmu-image-tube-diag.k"));
+  int purls_in_text = 0, knits_in_text = 0;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.starts_with("knit ")) continue;
+    ++knits_in_text;
+    purls_in_text += line.starts_with("knit - b") || line.starts_with("knit + f");
+  }
+  ASSERT_GT(purls_in_text, 1000);
+  const Imported tube = import_file(real("cmu-image-tube-diag.k"));
+  EXPECT_EQ(tube.pattern.knitting, Knitting::round);
+  for (const std::string& w : tube.warnings) EXPECT_EQ(w.find("approximately"), std::string::npos) << w;
+  for (const Course& c : tube.pattern.courses) ASSERT_EQ(produced(c), 201) << c.where.line;
+  auto t = tally(tube.pattern);
+  EXPECT_EQ(t["p"], purls_in_text);
+  EXPECT_EQ(t["k"] + t["p"], knits_in_text);
 }
 
 TEST(KnitoutImport, EveryRealProgramReadsIntoAPatternTheKnitGraphTakes) {
