@@ -106,11 +106,17 @@ int bench(int wales, int courses, const CompileOptions& options, bool header, bo
   const std::size_t triangles = tiles::drawn(fabric.mesh).triangles;
   const bool instanced = fabric.instanced;
   const Density density = fabric.density;
+  const double loops = static_cast<double>(fabric.layout.loops.size());
+  const bool relaxed = fabric.relaxed;
+  const int relax_iterations = fabric.relaxation.iterations;
+  const bool flattened = options.instancing == Instancing::flatten && fabric.mesh.instanced.empty() &&
+                         fabric.mesh_choice.find("every instance") != std::string::npos;
+  fabric = Fabric{};  // freed before the timings below, which each start with the memory the job left
   // --flatten's own step, timed against a memcpy of its bytes below: the instances written
   // out (tiles::flatten) from the instanced mesh it was given.
   double flatten_seconds = -1.0;
   std::size_t flatten_bytes = 0;
-  if (options.instancing == Instancing::flatten && fabric.mesh.instanced.empty() && fabric.mesh_choice.find("every instance") != std::string::npos) {
+  if (flattened) {
     CompileOptions again = options;
     again.instancing = Instancing::instance;
     again.progress = nullptr;
@@ -121,10 +127,6 @@ int bench(int wales, int courses, const CompileOptions& options, bool header, bo
     for (const auto& p : flat_mesh.primitives)
       flatten_bytes += p.positions.size() * 32 + p.indices.size() * 4;  // position, normal, uv; indices
   }
-  const double loops = static_cast<double>(fabric.layout.loops.size());
-  const bool relaxed = fabric.relaxed;
-  const int relax_iterations = fabric.relaxation.iterations;
-  fabric = Fabric{};
   const double copy = memcpy_seconds(bytes);
   if (header) {
     fmt::print("| swatch | sides, tolerance | loops | triangles | .glb MB | script s | mesh s | write s | total s | "
