@@ -12,6 +12,7 @@
 #include "relax/chains.hpp"
 #include "relax/contacts.hpp"
 #include "relax/strips.hpp"
+#include "relax/tile.hpp"
 #include "relax/tiled_start.hpp"
 #include "spatial/columns.hpp"
 
@@ -29,24 +30,6 @@ LoopGrid grid_of(const layout::Layout& layout) {
           static_cast<long>(i);
   }
   return g;
-}
-
-// Whether loop b is laid out as loop a moved by (wales, courses) of the lattice: the same
-// stitch, shape, yarn and direction, and every data point moved by the same step.
-bool repeats(const layout::Layout& layout, long a, long b, int wales, int courses) {
-  if (a < 0 || b < 0) return a == b;
-  const auto& la = layout.loops[static_cast<std::size_t>(a)];
-  const auto& lb = layout.loops[static_cast<std::size_t>(b)];
-  if (la.stitch != lb.stitch || la.shape != lb.shape || la.yarn != lb.yarn ||
-      layout.direction[static_cast<std::size_t>(la.course)] != layout.direction[static_cast<std::size_t>(lb.course)])
-    return false;
-  const glm::dvec3 step(wales * layout.loop_width, courses * layout.course_spacing, 0.0);
-  const double tolerance = 1e-6 * layout.loop_width;
-  for (int k = 0; k < layout::loop_points; ++k) {
-    const auto K = static_cast<std::size_t>(k);
-    if (glm::distance(la.data_points[K] + step, lb.data_points[K]) > tolerance) return false;
-  }
-  return true;
 }
 
 struct Interior {
@@ -68,8 +51,6 @@ int smallest_period(const layout::Layout& layout, const LoopGrid& g, const Inter
   }
   return 0;
 }
-
-int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
 }  // namespace
 
@@ -122,100 +103,11 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
 std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& chains,
                                        const std::vector<yarn::Size>& sizes, const Options& options, const Repeat& repeat) {
   const LoopGrid g = grid_of(layout);
-  // Which piece, and which of its loops, each loop is.
-  std::vector<std::pair<long, long>> owner(layout.loops.size(), {-1, -1});
-  for (std::size_t i = 0; i < chains.size(); ++i)
-    for (std::size_t j = 0; j < chains[i].loops.size(); ++j)
-      owner[static_cast<std::size_t>(chains[i].loops[j])] = {static_cast<long>(i), static_cast<long>(j)};
-
-  // The tile: the block's loops as a layout of their own, and each piece's runs of them
-  // (consecutive loops of one course, with what lies between them) as its pieces.
-  layout::Layout tile;
-  tile.courses = repeat.courses;
-  tile.wales = repeat.wales;
-  tile.knitting = Knitting::flat;
-  tile.loop_width = layout.loop_width;
-  tile.course_spacing = layout.course_spacing;
-  tile.float_behind = layout.float_behind;
-  tile.float_in_front = layout.float_in_front;
-  std::vector<long> tile_loop(layout.loops.size(), -1);  // fabric loop -> tile loop
-  for (int c = 0; c < repeat.courses; ++c) {
-    const int course = repeat.course0 + c;
-    tile.needle.push_back(repeat.wales);
-    tile.origin_x.push_back(layout.origin_x[static_cast<std::size_t>(course)]);
-    const auto& edges = layout.slot_x[static_cast<std::size_t>(course)];
-    tile.slot_x.emplace_back(edges.begin() + repeat.wale0, edges.begin() + repeat.wale0 + repeat.wales + 1);
-    tile.direction.push_back(layout.direction[static_cast<std::size_t>(course)]);
-    for (int w = 0; w < repeat.wales; ++w) {
-      const auto i = static_cast<std::size_t>(g(course, repeat.wale0 + w));
-      if (owner[i].first < 0) return std::nullopt;
-      layout::Loop loop = layout.loops[i];
-      loop.course = c;
-      loop.wale = w;
-      tile_loop[i] = static_cast<long>(tile.loops.size());
-      tile.loops.push_back(loop);
-    }
-  }
-  std::vector<yarn_paths::Piece> tile_pieces;
-  struct RunImage {
-    std::size_t piece;
-    std::uint32_t point, source;
-    std::int8_t across;
-  };
-  std::vector<RunImage> run_images;
-  std::vector<std::size_t> run_period_end;  // per tile piece: where its image a period on starts (0: none)
-  std::vector<std::pair<std::size_t, std::size_t>> where_in_tile(tile.loops.size());  // tile loop -> piece, loop
-  for (std::size_t i = 0; i < chains.size(); ++i) {
-    const auto& piece = chains[i];
-    std::size_t j = 0;
-    while (j < piece.loops.size()) {
-      if (tile_loop[static_cast<std::size_t>(piece.loops[j])] < 0) {
-        ++j;
-        continue;
-      }
-      const int course = layout.loops[static_cast<std::size_t>(piece.loops[j])].course;
-      std::size_t end = j + 1;
-      while (end < piece.loops.size() && tile_loop[static_cast<std::size_t>(piece.loops[end])] >= 0 &&
-             layout.loops[static_cast<std::size_t>(piece.loops[end])].course == course)
-        ++end;
-      // One period of the course's yarn, [from, from + n), and `handles` points on each
-      // side of it: its images in the tiles before and after, kept there as it moves.
-      std::size_t from = piece.loop_first[j], n = piece.loop_last[end - 1] + 1 - from, handles = 0;
-      int across = 0;
-      const bool neighbours = j > 0 && end < piece.loops.size() &&
-                              layout.loops[static_cast<std::size_t>(piece.loops[j - 1])].course == course &&
-                              layout.loops[static_cast<std::size_t>(piece.loops[end])].course == course;
-      if (neighbours) {
-        const std::size_t period = piece.loop_first[end] - from;
-        across = periodic_run(piece.data_points, from, period, repeat.wales * layout.loop_width, 1e-3 * layout.loop_width);
-        if (across != 0) {
-          n = period;
-          handles = run_handles;
-        }
-      }
-      yarn_paths::Piece run;
-      run.yarn = piece.yarn;
-      run.data_points.assign(piece.data_points.begin() + static_cast<std::ptrdiff_t>(from - handles),
-                             piece.data_points.begin() + static_cast<std::ptrdiff_t>(from + n + handles));
-      const std::size_t base = from - handles;
-      for (std::size_t k = j; k < end; ++k) {
-        const auto t = static_cast<std::size_t>(tile_loop[static_cast<std::size_t>(piece.loops[k])]);
-        where_in_tile[t] = {tile_pieces.size(), run.loops.size()};
-        run.loops.push_back(static_cast<int>(t));
-        run.loop_first.push_back(piece.loop_first[k] - base);
-        run.loop_last.push_back(piece.loop_last[k] - base);
-      }
-      for (std::size_t h = 0; h < handles; ++h) {  // in the run's own indices; made global below
-        run_images.push_back({tile_pieces.size(), static_cast<std::uint32_t>(h), static_cast<std::uint32_t>(h + n),
-                              static_cast<std::int8_t>(-across)});
-        run_images.push_back({tile_pieces.size(), static_cast<std::uint32_t>(handles + n + h), static_cast<std::uint32_t>(handles + h),
-                              static_cast<std::int8_t>(across)});
-      }
-      tile_pieces.push_back(std::move(run));
-      run_period_end.push_back(handles > 0 ? handles + n : 0);
-      j = end;
-    }
-  }
+  std::optional<Tile> cut = cut_tile(layout, g, chains, repeat);
+  if (!cut) return std::nullopt;
+  const layout::Layout& tile = cut->layout;
+  const std::vector<yarn_paths::Piece>& tile_pieces = cut->pieces;
+  const Start& links = cut->links;
 
   Options tile_options = options;
   tile_options.boundary = Boundary::periodic;
@@ -223,124 +115,20 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // A tile is small: settled four times as far, it costs little and every loop follows it.
   tile_options.settled_motion = 0.25 * options.settled_motion;
   tile_options.max_iterations = 4 * options.max_iterations;
-  Start links;
-  {
-    std::vector<std::uint32_t> first(tile_pieces.size() + 1, 0);
-    for (std::size_t t = 0; t < tile_pieces.size(); ++t)
-      first[t + 1] = first[t] + static_cast<std::uint32_t>(tile_pieces[t].data_points.size());
-    for (const RunImage& r : run_images)
-      links.images.push_back({first[r.piece] + r.point, first[r.piece] + r.source, r.across});
-  }
   const Relaxed relaxed_tile = relax_chains(tile, tile_pieces, sizes, tile_options, &links);
   const glm::dvec2 rest_period(repeat.wales * layout.loop_width, repeat.courses * layout.course_spacing);
   if (relaxed_tile.stats.period.x <= 0.0 || relaxed_tile.stats.period.y <= 0.0) return std::nullopt;
   const glm::dvec2 stretch = relaxed_tile.stats.period / rest_period;  // the lattice's, per axis
   // The whole fabric stretched as the tile was, about the tile's first loop's P0.
   const glm::dvec3 origin = tile.loops.front().data_points[0];
-  auto affine = [&](const glm::dvec3& p) {
-    return glm::dvec3((p.x - origin.x) * (stretch.x - 1.0), (p.y - origin.y) * (stretch.y - 1.0), 0.0);
-  };
+  const LatticeStretch affine{origin, stretch};
 
-  // Every point's own move (over the lattice's stretch): a tiled loop's is its tile
-  // loop's; the others' are blended along their yarn between the nearest tiled points.
-  std::vector<std::vector<glm::dvec3>> local(chains.size());
-  std::vector<std::vector<std::uint8_t>> tiled(chains.size());
-  // Per tiled point, its tile point (the tile's pieces' points in order).
-  constexpr std::uint32_t none = UINT32_MAX;
-  std::vector<std::vector<std::uint32_t>> tile_point(chains.size());
-  std::vector<std::uint32_t> tile_first(tile_pieces.size() + 1, 0);
-  for (std::size_t t = 0; t < tile_pieces.size(); ++t)
-    tile_first[t + 1] = tile_first[t] + static_cast<std::uint32_t>(tile_pieces[t].data_points.size());
-  std::vector<std::uint8_t> loop_tiled(layout.loops.size(), 0);
-  for (std::size_t i = 0; i < chains.size(); ++i) {
-    local[i].assign(chains[i].data_points.size(), glm::dvec3(0.0));
-    tiled[i].assign(chains[i].data_points.size(), 0);
-    tile_point[i].assign(chains[i].data_points.size(), none);
-  }
-  // The loop the tile has in each loop's place, and whether it is laid out as that one.
-  auto tile_place = [&](const layout::Loop& loop) {
-    const int dc = loop.course - repeat.course0, dw = loop.wale - repeat.wale0;
-    return glm::ivec2(dw - floor_div(dw, repeat.wales) * repeat.wales, dc - floor_div(dc, repeat.courses) * repeat.courses);
-  };
-  std::vector<std::uint8_t> as_tiled(layout.loops.size(), 0);
-  for (std::size_t l = 0; l < layout.loops.size(); ++l) {
-    const auto& loop = layout.loops[l];
-    const glm::ivec2 t = tile_place(loop);
-    as_tiled[l] = repeats(layout, g(repeat.course0 + t.y, repeat.wale0 + t.x), static_cast<long>(l), loop.wale - (repeat.wale0 + t.x),
-                          loop.course - (repeat.course0 + t.y));
-  }
-  for (std::size_t l = 0; l < layout.loops.size(); ++l) {
-    const auto& loop = layout.loops[l];
-    const auto [pi, pj] = owner[l];
-    if (pi < 0 || !as_tiled[l]) continue;
-    const glm::ivec2 place = tile_place(loop);
-    const long cls = g(repeat.course0 + place.y, repeat.wale0 + place.x);
-    // Tiled only where the loop and its neighbours two loops round are each laid out as
-    // their tile loops: the tile's shape then fits among them (a selvedge loop, or one
-    // beside a band of another stitch, is not).
-    bool alike_round = true;
-    for (int u = -2; alike_round && u <= 2; ++u)
-      for (int v = -2; alike_round && v <= 2; ++v) {
-        const long other = g(loop.course + u, loop.wale + v);
-        alike_round = other >= 0 && as_tiled[static_cast<std::size_t>(other)];
-      }
-    if (!alike_round) continue;
-    const auto t = static_cast<std::size_t>(tile_loop[static_cast<std::size_t>(cls)]);
-    const auto [tp, tj] = where_in_tile[t];
-    const auto& fabric_piece = chains[static_cast<std::size_t>(pi)];
-    const auto& rest_run = tile_pieces[tp];
-    const auto& relaxed_run = relaxed_tile.pieces[tp];
-    const auto J = static_cast<std::size_t>(pj);
-    const std::size_t f = fabric_piece.loop_first[J], tf = rest_run.loop_first[tj];
-    if (rest_run.loop_last[tj] - tf != fabric_piece.loop_last[J] - f) continue;
-    // The loop's points, and those on to the next loop's first (the yarn between a knit
-    // and a purl, a float) when the tile has as many there: in the tile the next loop is
-    // the run's next, or the image of its first a period on.
-    std::size_t n = fabric_piece.loop_last[J] - f;
-    const std::size_t tile_next = tj + 1 < rest_run.loops.size() ? rest_run.loop_first[tj + 1] : run_period_end[tp];
-    // Laid out alike, the tile's points the fabric's moved by a lattice step.
-    const glm::dvec3 shift = fabric_piece.data_points[f] - rest_run.data_points[tf];
-    // (The refined points of a loop near a selvedge stray a little from its tile loop's:
-    // the interpolation is global. The yarn between loops must be the tile's closely.)
-    auto alike = [&](std::size_t from, std::size_t to, double tolerance) {
-      for (std::size_t k = from; k <= to; ++k)
-        if (glm::distance(fabric_piece.data_points[f + k], rest_run.data_points[tf + k] + shift) > tolerance * layout.loop_width)
-          return false;
-      return true;
-    };
-    if (!alike(0, n, 1e-2)) continue;
-    if (J + 1 < fabric_piece.loops.size() && tile_next > tf + n && tile_next <= rest_run.data_points.size() &&
-        fabric_piece.loop_first[J + 1] - f == tile_next - tf && alike(n + 1, tile_next - tf - 1, 1e-3))
-      n = tile_next - tf - 1;
-    for (std::size_t k = 0; k <= n; ++k) {
-      const glm::dvec3& at = rest_run.data_points[tf + k];
-      local[static_cast<std::size_t>(pi)][f + k] = relaxed_run.data_points[tf + k] - at - affine(at);
-      tiled[static_cast<std::size_t>(pi)][f + k] = 1;
-      tile_point[static_cast<std::size_t>(pi)][f + k] = tile_first[tp] + static_cast<std::uint32_t>(tf + k);
-    }
-    loop_tiled[l] = 1;
-  }
-  for (std::size_t i = 0; i < chains.size(); ++i) {
-    auto& move = local[i];
-    const auto& mark = tiled[i];
-    long last = -1;
-    for (std::size_t k = 0; k <= move.size(); ++k) {
-      if (k < move.size() && !mark[k]) continue;
-      // Points last+1 .. k-1 lie between tiled points last and k (either may be missing).
-      for (long u = last + 1; u < static_cast<long>(k); ++u) {
-        const auto U = static_cast<std::size_t>(u);
-        if (last >= 0 && k < move.size()) {
-          const double t = static_cast<double>(u - last) / static_cast<double>(static_cast<long>(k) - last);
-          move[U] = (1.0 - t) * move[static_cast<std::size_t>(last)] + t * move[k];
-        } else if (last >= 0) {
-          move[U] = move[static_cast<std::size_t>(last)];
-        } else if (k < move.size()) {
-          move[U] = move[k];
-        }
-      }
-      last = static_cast<long>(k);
-    }
-  }
+  const Moves moves = tile_moves(layout, g, chains, repeat, *cut, relaxed_tile, affine);
+  const std::vector<std::vector<glm::dvec3>>& local = moves.local;
+  const std::vector<std::vector<std::uint8_t>>& tiled = moves.tiled;
+  const std::vector<std::vector<std::uint32_t>>& tile_point = moves.tile_point;
+  const std::vector<std::uint32_t>& tile_first = moves.tile_first;
+  const std::vector<std::uint8_t>& loop_tiled = moves.loop_tiled;
 
   // Held: the tiled loops with nothing untiled within the edge band, and what lies
   // between two of them along the yarn where the tile gave it (not blended).
@@ -486,15 +274,15 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // any contact's and pressing's) has its tile point's surroundings, as every other such
   // copy of it has: the first copy stands for them all.
   {
-    std::vector<std::uint32_t> first_copy(tile_first.back(), none);
+    std::vector<std::uint32_t> first_copy(tile_first.back(), no_tile_point);
     out.same_as.resize(start.pos.size());
     std::size_t at = 0;
     for (std::size_t i = 0; i < chains.size(); ++i)
       for (std::size_t k = 0; k < chains[i].data_points.size(); ++k, ++at) {
         out.same_as[at] = static_cast<std::uint32_t>(at);
         const std::uint32_t t = tile_point[i][k];
-        if (t == none || !held_by_tile[at] || part.needed[at] != 0) continue;
-        if (first_copy[t] == none) first_copy[t] = static_cast<std::uint32_t>(at);
+        if (t == no_tile_point || !held_by_tile[at] || part.needed[at] != 0) continue;
+        if (first_copy[t] == no_tile_point) first_copy[t] = static_cast<std::uint32_t>(at);
         out.same_as[at] = first_copy[t];
       }
   }
