@@ -34,8 +34,8 @@ ViewDensity density_for_view(const layout::Layout& layout, int pixels) {
   // 8 on the yarn's diameter, 2 / pixels of it), never finer than draft, at most a quarter;
   // round the ring, the fewest sides whose chord error (the sagitta of a side, (1 - cos
   // pi/n) / 2 of the diameter) is within it.
-  const double tolerance = std::clamp(2.0 / loop, 0.05, 0.25);
-  int sides = 4;
+  const double tolerance = std::clamp(2.0 / loop, 0.05, coarsest_view_density.chord_tolerance);
+  int sides = coarsest_view_density.sides;
   while ((1.0 - std::cos(std::numbers::pi / sides)) / 2.0 > tolerance) ++sides;
   return {{sides, tolerance}, loop, false};
 }
@@ -95,6 +95,17 @@ void report(const CompileOptions& options, const char* stage, double fraction) {
 
 }  // namespace
 
+double least_vertices(const Pattern& pattern, const CompileOptions& options) {
+  // Half the rings the plain loop needs, about 55 at 1% tolerance, scaling as
+  // tolerance^-1/2. The density from the view is known only once laid out: the coarsest
+  // it can be, till then.
+  const Density least = options.density_from_view ? coarsest_view_density : Density{options.sides, options.chord_tolerance};
+  double per_ring = 1e30;
+  for (const Yarn& y : pattern.yarns) per_ring = std::min(per_ring, static_cast<double>(tubes::vertex_count(y, 1000, least.sides)) / 1000.0);
+  const double rings_per_loop = 0.5 * 55.0 * std::sqrt(0.01 / least.chord_tolerance);
+  return static_cast<double>(loops_of(pattern)) * rings_per_loop * per_ring;
+}
+
 Fabric compile(const Pattern& pattern, const CompileOptions& options) {
   assert(options.sides >= 3 && options.chord_tolerance > 0.0);
   const auto loops = static_cast<std::uint64_t>(loops_of(pattern));
@@ -102,13 +113,10 @@ Fabric compile(const Pattern& pattern, const CompileOptions& options) {
     throw CompileError(where_it_passes(pattern, static_cast<double>(max_loops) / static_cast<double>(loops)) + "the fabric has " +
                        std::to_string(loops) + " loops; knitc lays out at most " + std::to_string(max_loops) +
                        " (knitc check and chart take more)");
-  // A cautious lower bound before the layout (half the rings the plain loop needs, about
-  // 55 at 1% tolerance, scaling as tolerance^-1/2) turns away the hopeless in a moment.
-  double per_ring = 1e30;
-  for (const Yarn& y : pattern.yarns) per_ring = std::min(per_ring, static_cast<double>(tubes::vertex_count(y, 1000, options.sides)) / 1000.0);
-  const double rings_per_loop = 0.5 * 55.0 * std::sqrt(0.01 / options.chord_tolerance);
-  if (static_cast<double>(loops) * rings_per_loop * per_ring > static_cast<double>(max_vertices) && !may_tile(options, pattern, pattern.knitting))
-    too_many_vertices(pattern, static_cast<double>(loops) * rings_per_loop * per_ring, "at least ");
+  // A cautious lower bound before the layout turns away the hopeless in a moment.
+  const double least = least_vertices(pattern, options);
+  if (least > static_cast<double>(max_vertices) && !may_tile(options, pattern, pattern.knitting))
+    too_many_vertices(pattern, least, "at least ");
   layout::Layout layout;
   try {
     layout = layout::lay_out(pattern, knit(pattern));

@@ -44,6 +44,7 @@ Density density(Quality quality);  // draft: 6, 5%; normal: 12, 1%; fine: 24, 0.
 // across and its plies and fibres under a pixel, so the baked maps would show only their
 // average: `maps` says whether they are worth drawing.
 inline constexpr int view_pixels = 1920;
+inline constexpr Density coarsest_view_density{4, 0.25};
 struct ViewDensity {
   Density density;
   double loop_pixels;
@@ -123,6 +124,11 @@ class CompileError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// The fewest vertices the pattern's mesh could have at `options`' density (or, from the
+// view, the coarsest the view can choose), from its loop count alone, before it is laid
+// out: compile() refuses a fabric past max_vertices by this at once.
+double least_vertices(const Pattern& pattern, const CompileOptions& options);
 
 // The pattern's knit graph. Throws CompileError at the row it cannot work (a dropped
 // stitch whose wale cannot unravel): `knitc check` asks this too.

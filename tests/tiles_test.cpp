@@ -204,6 +204,25 @@ TEST(Tiles, TheDensityFollowsHowLargeALoopIsInAFullView) {
   EXPECT_EQ(between.density.sides, 5);
 }
 
+// Before the layout, a fabric is refused by the fewest vertices it could have. From the
+// view, that is at the coarsest density the view can choose, not at the default's 12
+// sides: a fabric the view meshes at 4 sides is not turned away as if at normal quality.
+TEST(Tiles, TheBoundBeforeTheLayoutTakesTheCoarsestDensityTheViewCanChoose) {
+  const Pattern p = test::jersey(150, 120);
+  CompileOptions given;  // 12 sides, 1%
+  CompileOptions view = given;
+  view.density_from_view = true;
+  CompileOptions coarsest = given;
+  coarsest.sides = coarsest_view_density.sides;
+  coarsest.chord_tolerance = coarsest_view_density.chord_tolerance;
+  EXPECT_DOUBLE_EQ(least_vertices(p, view), least_vertices(p, coarsest));
+  EXPECT_LT(least_vertices(p, view), least_vertices(p, given) / 5.0);
+  // Still a lower bound: the fabric as the view meshes it has more.
+  const Fabric fabric = compile(p, view);
+  EXPECT_EQ(fabric.density.sides, 4);
+  EXPECT_GT(static_cast<double>(tiles::drawn(fabric.mesh).vertices), least_vertices(p, view));
+}
+
 // The files, as written by the program and read by tinygltf: the instanced file's tile
 // placed by its translations is the flattened file's triangles, within a micrometre.
 TEST(Tiles, EachFlattenedInstanceLiesOnItsTileInTheFiles) {
