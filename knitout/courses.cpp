@@ -131,13 +131,12 @@ Imported import_program(const Program& program, const Profile& profile) {
       if (round && !front_layer(a)) return a.x > b.x;
       return a.x < b.x;
     });
-    // A stitch seen as a purl: flat, one on the back bed; round, one whose loop (or the
-    // needle holding it) is on its layer's other bed.
+    // A stitch seen as a purl: flat, one on the back bed; round, one whose new loop was
+    // made (or, with none, whose needle is) on its layer's other bed.
     auto purl_at = [&](const Position& q, int loop) {
       if (!round) return !front(q.needle.bed);
-      const std::size_t l = static_cast<std::size_t>(loop >= 0 ? loop : q.pile.back());
-      const Bed bed = loop >= 0 ? loops[l].needle.bed : q.needle.bed;
-      return front(bed) != (cut.front_layer[l] != 0);
+      const Bed bed = loop >= 0 ? loops[static_cast<std::size_t>(loop)].needle.bed : q.needle.bed;
+      return front(bed) != front_layer(q);
     };
     const int mine = static_cast<int>(ci);
     auto is_new = [&](int l) { return course_of[static_cast<std::size_t>(l)] == mine; };
