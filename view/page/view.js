@@ -52,16 +52,22 @@ function resize() {
 }
 window.addEventListener('resize', resize);
 
-let pending = false;
+// At most one frame is drawn per display frame. Software GL (SwiftShader) takes a good
+// part of a second to draw a swatch with its maps, so a frame already asked for by rAF is
+// dropped when one is drawn now: otherwise an edit would be drawn twice.
+let pending = 0;  // the requestAnimationFrame id of the frame asked for, or 0
 function draw() {
   if (pending) return;
-  pending = true;
-  requestAnimationFrame(() => {
-    pending = false;
+  pending = requestAnimationFrame(() => {
+    pending = 0;
     renderer.render(scene, camera);
   });
 }
-view.drawNow = () => renderer.render(scene, camera);
+view.drawNow = () => {
+  if (pending) cancelAnimationFrame(pending);
+  pending = 0;
+  renderer.render(scene, camera);
+};
 view.camera = () => ({ position: camera.position.toArray(), target: controls.target.toArray() });
 
 // The three standard views: the face (+z), the back (-z), edge-on (along x, a little above).
