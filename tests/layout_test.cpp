@@ -260,6 +260,22 @@ TEST(YarnPathsOfFabrics, InTheRoundTheYarnSpiralsRoundATube) {
   EXPECT_NEAR(last.y - first.y, 5 * C, 1e-9);  // the cast-on round and four more
 }
 
+// Unrolling a point of the tube and rolling it back gives the point, whichever round's
+// place it was unrolled next to; unrolled next to its own place, a local point comes back.
+TEST(YarnPathsOfFabrics, ATubesPointUnrollsAndRollsBack) {
+  const double circumference = 96.0, climb = 3.6;
+  for (const glm::dvec3 local : {glm::dvec3(1.5, 10.0, 0.4), glm::dvec3(47.0, 3.0, -0.7), glm::dvec3(95.9, 30.0, 1.0)}) {
+    const glm::dvec3 q = layout::roll(local, circumference, climb);
+    const glm::dvec3 back = layout::unroll(q, circumference, climb, local.x + 0.3 * circumference);
+    EXPECT_LT(glm::distance(back, local), 1e-9);
+    for (const double near : {-circumference, 0.0, 2.5 * circumference}) {
+      const glm::dvec3 other = layout::unroll(q, circumference, climb, near);
+      EXPECT_LE(std::abs(other.x - near), 0.5 * circumference + 1e-9);
+      EXPECT_LT(glm::distance(layout::roll(other, circumference, climb), q), 1e-9);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace knitc
 

@@ -4,6 +4,7 @@
 // pieces it is made of: capsule distances, the knot-diagram comparison, the boundaries.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <regex>
 
 #include <glm/geometric.hpp>
@@ -292,6 +293,68 @@ TEST(Repeat, TiledSwatchClearsAndTakesTheTilesShape) {
   const auto a = measure::loop_shape(by_repeat.layout, by_repeat.pieces);
   ASSERT_GT(periodic.relaxation.period.x, 0.0);
   EXPECT_NEAR(a.wale_pitch, periodic.relaxation.period.x / 4.0, 0.03 * a.wale_pitch);
+}
+
+// A tube's interior repeats as flat work's does in its layout's own frame: relaxed by the
+// same tile, unrolled and rolled back round the tube, its cores clear and its loops take
+// the tile's shape, as a flat swatch's do; a tube too narrow for a flat tile relaxes whole.
+TEST(Repeat, ATubeIsRelaxedByItsRepeatRolledRoundIt) {
+  auto tube = [](int stitches) {
+    const std::string source =
+        "pattern { gauge = { loop_width = 4.0, loop_height = 4.2, thickness = 2.0 }, yarns = { A = { diameter = 1.0 } }, "
+        "knitting = \"round\" }\ncast_on(" + std::to_string(stitches) + ")\nrows(24, \"k\")\n";
+    return runtime::run_pattern(source, "tube.lua").pattern;
+  };
+  const Pattern wide = tube(32);
+  const Fabric round = compile(wide, centrelines(true));
+  ASSERT_TRUE(round.relaxed);
+  EXPECT_EQ(round.relaxation.repeat_wales, 4);
+  EXPECT_GT(round.relaxation.held_share, 0.3);
+  const auto m = measure::measure(wide, round.layout, round.pieces);
+  EXPECT_LE(m.deepest_core_penetration, 0.05);
+  // The flat swatch relaxed by the same tile: the same loops.
+  const Fabric flat = compile(test::jersey(16, 20), centrelines(true));
+  ASSERT_EQ(flat.relaxation.repeat_wales, 4);
+  const auto a = measure::loop_shape(round.layout, round.pieces), b = measure::loop_shape(flat.layout, flat.pieces);
+  ASSERT_GT(a.loops, 100u);
+  EXPECT_NEAR(a.loop_length, b.loop_length, 0.01 * b.loop_length);
+  EXPECT_NEAR(a.course_spacing, b.course_spacing, 0.03 * b.course_spacing);
+  // Across, the flat loops' spacing at the radius their centres stand out from the tube's
+  // middle surface (the layout's z = 0, rolled round 32 of the flat pitches), as the
+  // flat loops' centres stand in front of theirs.
+  double depth = 0.0;
+  int counted = 0;
+  for (const auto& piece : flat.pieces)
+    for (std::size_t j = 0; j < piece.path.loops.size(); ++j) {
+      const auto& loop = flat.layout.loops[static_cast<std::size_t>(piece.path.loops[j])];
+      if (loop.course < 6 || loop.course > 14 || loop.wale < 4 || loop.wale > 11) continue;
+      for (std::size_t k = piece.path.loop_first[j]; k <= piece.path.loop_last[j]; ++k, ++counted) depth += piece.path.data_points[k].z;
+    }
+  ASSERT_GT(counted, 0);
+  depth /= counted;
+  const double middle = 32.0 * b.wale_pitch / (2.0 * std::numbers::pi);
+  EXPECT_NEAR(a.wale_spacing, b.wale_spacing * (middle + depth) / middle, 0.01 * b.wale_spacing) << depth;
+  // Round the middle rounds, the loops at the seam (relaxed against the held interior)
+  // as far from the axis as the held ones: the tube stays round.
+  double seam = 0.0, held = 0.0;
+  int seams = 0, helds = 0;
+  for (const auto& piece : round.pieces)
+    for (std::size_t j = 0; j < piece.path.loops.size(); ++j) {
+      const auto& loop = round.layout.loops[static_cast<std::size_t>(piece.path.loops[j])];
+      if (loop.course < 10 || loop.course > 14) continue;
+      double r = 0.0;
+      for (std::size_t k = piece.path.loop_first[j]; k <= piece.path.loop_last[j]; ++k)
+        r += std::hypot(piece.path.data_points[k].x, piece.path.data_points[k].z);
+      r /= static_cast<double>(piece.path.loop_last[j] + 1 - piece.path.loop_first[j]);
+      const bool at_seam = loop.wale < 2 || loop.wale >= round.layout.wales - 2;
+      (at_seam ? seam : held) += r;
+      ++(at_seam ? seams : helds);
+    }
+  ASSERT_GT(seams, 0);
+  ASSERT_GT(helds, 0);
+  EXPECT_NEAR(seam / seams, held / helds, 0.03 * held / helds);
+  const Fabric narrow = compile(tube(16), centrelines(true));
+  EXPECT_EQ(narrow.relaxation.repeat_wales, 0) << "under least_round_wales: relaxed whole";
 }
 
 // The held interior's pressing is found once per tile point and copied to its other

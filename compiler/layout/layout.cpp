@@ -519,11 +519,22 @@ glm::dvec3 to_fabric(const Layout& layout, const glm::dvec3& p, int course) {
   if (layout.knitting == Knitting::flat) return p;
   const double circumference = course_width(layout, course);
   if (circumference <= 0.0) return p;
+  return roll(p, circumference, layout.course_spacing);
+}
+
+glm::dvec3 roll(const glm::dvec3& p, double circumference, double climb) {
   const double turn = p.x / circumference;  // 0 at needle position 0, 1 a round later
   const double angle = 2.0 * std::numbers::pi * turn - std::numbers::pi;
   const double r = circumference / (2.0 * std::numbers::pi) + p.z;
   // Worked right to left, a round climbs one course from x = circumference to x = 0.
-  return {r * std::sin(angle), p.y + layout.course_spacing * (1.0 - turn), r * std::cos(angle)};
+  return {r * std::sin(angle), p.y + climb * (1.0 - turn), r * std::cos(angle)};
+}
+
+glm::dvec3 unroll(const glm::dvec3& q, double circumference, double climb, double near_x) {
+  const double angle = std::atan2(q.x, q.z);
+  double turn = (angle + std::numbers::pi) / (2.0 * std::numbers::pi);
+  turn += std::round(near_x / circumference - turn);
+  return {turn * circumference, q.y - climb * (1.0 - turn), std::hypot(q.x, q.z) - circumference / (2.0 * std::numbers::pi)};
 }
 
 }  // namespace knitc::layout

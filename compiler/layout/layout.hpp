@@ -92,4 +92,11 @@ double course_width(const Layout& layout, int course);
 // the tube (circumference: the course's width) for work in the round.
 glm::dvec3 to_fabric(const Layout& layout, const glm::dvec3& local, int course);
 
+// The tube's wrapping itself (to_fabric's for work in the round): `local` rolled onto a
+// tube of `circumference` (mm, > 0) whose courses climb `climb` (mm) a round. Unrolled,
+// the fabric point's local point whose x is the nearest to `near_x` of those a round
+// apart (each rolls back onto it: roll(unroll(p, c, h, x), c, h) == p for any x).
+glm::dvec3 roll(const glm::dvec3& local, double circumference, double climb);
+glm::dvec3 unroll(const glm::dvec3& fabric, double circumference, double climb, double near_x);
+
 }  // namespace knitc::layout

@@ -14,6 +14,7 @@
 #include "relax/strips.hpp"
 #include "relax/tile.hpp"
 #include "relax/tiled_start.hpp"
+#include "relax/tube.hpp"
 #include "spatial/columns.hpp"
 
 namespace knitc::relax {
@@ -67,7 +68,8 @@ int periodic_run(const std::vector<glm::dvec3>& points, std::size_t from, std::s
 }
 
 std::optional<Repeat> find_repeat(const layout::Layout& layout) {
-  if (layout.knitting != Knitting::flat || layout.courses < 8 || layout.wales < 8) return std::nullopt;
+  if (layout.courses < 8 || layout.wales < 8) return std::nullopt;
+  if (layout.knitting == Knitting::round && layout.wales < least_round_wales) return std::nullopt;
   // Tucks: tiled, the held loops and the tuck loops in them lose crossings (half cardigan
   // at its own gauge: 118 lone crossings lost, docs/relaxation.md), so they relax whole.
   for (const auto& loop : layout.loops)
@@ -103,7 +105,12 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
 std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& chains,
                                        const std::vector<yarn::Size>& sizes, const Options& options, const Repeat& repeat) {
   const LoopGrid g = grid_of(layout);
-  std::optional<Tile> cut = cut_tile(layout, g, chains, repeat);
+  // A tube's tile is cut, relaxed and copied in its layout's flat frame, and every point
+  // rolled back onto the tube (its stretch, the tile's, widening it and its climb).
+  const bool round = layout.knitting == Knitting::round;
+  const Unrolled unrolled = round ? unroll(layout, chains) : Unrolled{};
+  const std::vector<yarn_paths::Piece>& flat = round ? unrolled.pieces : chains;
+  std::optional<Tile> cut = cut_tile(layout, g, flat, repeat);
   if (!cut) return std::nullopt;
   const layout::Layout& tile = cut->layout;
   const std::vector<yarn_paths::Piece>& tile_pieces = cut->pieces;
@@ -119,11 +126,13 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   const glm::dvec2 rest_period(repeat.wales * layout.loop_width, repeat.courses * layout.course_spacing);
   if (relaxed_tile.stats.period.x <= 0.0 || relaxed_tile.stats.period.y <= 0.0) return std::nullopt;
   const glm::dvec2 stretch = relaxed_tile.stats.period / rest_period;  // the lattice's, per axis
-  // The whole fabric stretched as the tile was, about the tile's first loop's P0.
-  const glm::dvec3 origin = tile.loops.front().data_points[0];
+  // The whole fabric stretched as the tile was, about the tile's first loop's P0 (a tube
+  // about its axis: x scales with the circumference).
+  glm::dvec3 origin = tile.loops.front().data_points[0];
+  if (round) origin.x = 0.0;
   const LatticeStretch affine{origin, stretch};
 
-  const Moves moves = tile_moves(layout, g, chains, repeat, *cut, relaxed_tile, affine);
+  const Moves moves = tile_moves(layout, g, flat, repeat, *cut, relaxed_tile, affine);
   const std::vector<std::vector<glm::dvec3>>& local = moves.local;
   const std::vector<std::vector<std::uint8_t>>& tiled = moves.tiled;
   const std::vector<std::vector<std::uint32_t>>& tile_point = moves.tile_point;
@@ -215,8 +224,14 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
       }
     }
     for (std::size_t k = 0; k < held.size(); ++k) {
-      const glm::dvec3& p = piece.data_points[k];
-      start.pos.push_back(p + affine(p) + local[i][k]);
+      const glm::dvec3& p = flat[i].data_points[k];
+      const glm::dvec3 moved = p + affine(p) + local[i][k];
+      if (!round) {
+        start.pos.push_back(moved);
+      } else {
+        const double c = unrolled.circumference[i][k];
+        start.pos.push_back(c > 0.0 ? layout::roll(moved, c * stretch.x, layout.course_spacing * stretch.y) : piece.data_points[k]);
+      }
       start.held.push_back(held[k]);
     }
   }
@@ -236,7 +251,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   const double reach = 3.0 * thickest;
   std::vector<std::uint8_t> needed = near_free(start, reach);
   const std::vector<std::uint8_t> held_by_tile = start.held;
-  const Strips strips = options.by_strips
+  const Strips strips = options.by_strips && !round
                             ? relax_strips(layout, chains, sizes, options, repeat, relaxed_tile.stats.period, g, loop_held, start)
                             : Strips{};
   if (strips.refused) return std::nullopt;
@@ -272,8 +287,9 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   }
   // A held point that nothing free comes near (the crop's reach, three diameters: past
   // any contact's and pressing's) has its tile point's surroundings, as every other such
-  // copy of it has: the first copy stands for them all.
-  {
+  // copy of it has: the first copy stands for them all. (Round a tube the copies are
+  // turned, not moved: none stands for another.)
+  if (!round) {
     std::vector<std::uint32_t> first_copy(tile_first.back(), no_tile_point);
     out.same_as.resize(start.pos.size());
     std::size_t at = 0;
