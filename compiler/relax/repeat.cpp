@@ -22,7 +22,8 @@ namespace knitc::relax {
 namespace {
 
 LoopGrid grid_of(const layout::Layout& layout) {
-  LoopGrid g{layout.courses, layout.wales, {}};
+  LoopGrid g{layout.courses, layout.wales, {}, {}};
+  if (layout.knitting == Knitting::round) g.round_needles = layout.needle;
   g.at.assign(static_cast<std::size_t>(g.courses) * static_cast<std::size_t>(g.wales), -1);
   for (std::size_t i = 0; i < layout.loops.size(); ++i) {
     const auto& l = layout.loops[i];
@@ -86,14 +87,30 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
     for (std::size_t k = 1; k < edges.size(); ++k)
       if (std::abs(edges[k] - edges[k - 1] - layout.loop_width) > 1e-9 * layout.loop_width) return std::nullopt;
   const LoopGrid g = grid_of(layout);
-  const Interior in{2, layout.courses - 3, 2, layout.wales - 3};
-  const int p = smallest_period(layout, g, in, true), q = smallest_period(layout, g, in, false);
+  // The interior: all but the first and last two courses and needle positions (of its
+  // narrowest course), less up to
+  // `most_trimmed` more courses at either end where those do not repeat (a machine
+  // program's cast-on, its held and dropped loops, its bind-off's held rows), the fewest.
+  Interior in{2, layout.courses - 3, 2, layout.wales - 3};
+  int p = 0, q = 0;
+  for (int trimmed = 0; trimmed <= 2 * most_trimmed && (p == 0 || q == 0); ++trimmed)
+    for (int below = std::max(0, trimmed - most_trimmed); below <= std::min(trimmed, most_trimmed) && (p == 0 || q == 0); ++below) {
+      in = Interior{2 + below, layout.courses - 3 - (trimmed - below), 2, layout.wales - 3};
+      if (in.course_to - in.course_from + 1 < 8) continue;
+      for (int c = in.course_from; c <= in.course_to; ++c)  // the narrowest course's needles
+        in.wale_to = std::min(in.wale_to, layout.needle[static_cast<std::size_t>(c)] - 3);
+      if (in.wale_to - in.wale_from + 1 < 4) continue;
+      p = smallest_period(layout, g, in, true);
+      q = p == 0 ? 0 : smallest_period(layout, g, in, false);
+    }
   if (p == 0 || q == 0) return std::nullopt;
   Repeat r;
   r.wales = p * ((least_tile + p - 1) / p);
   r.courses = q * ((least_tile + q - 1) / q);
   r.wale0 = in.wale_from;
   r.course0 = in.course_from;
+  r.wale_period = p;
+  r.course_period = q;
   if (r.wale0 + r.wales - 1 > in.wale_to || r.course0 + r.courses - 1 > in.course_to) return std::nullopt;
   for (int c = r.course0; c < r.course0 + r.courses; ++c)
     for (int w = r.wale0; w < r.wale0 + r.wales; ++w)
@@ -125,6 +142,10 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   const Relaxed relaxed_tile = relax_chains(tile, tile_pieces, sizes, tile_options, &links);
   const glm::dvec2 rest_period(repeat.wales * layout.loop_width, repeat.courses * layout.course_spacing);
   if (relaxed_tile.stats.period.x <= 0.0 || relaxed_tile.stats.period.y <= 0.0) return std::nullopt;
+  // A tube has no crossings check after (measure::crossings projects flat work only): a
+  // tile that did not settle, whose courses may differ where the seam sets one beside
+  // another, is not copied round it.
+  if (round && relaxed_tile.stats.iterations >= tile_options.max_iterations) return std::nullopt;
   const glm::dvec2 stretch = relaxed_tile.stats.period / rest_period;  // the lattice's, per axis
   // The whole fabric stretched as the tile was, about the tile's first loop's P0 (a tube
   // about its axis: x scales with the circumference).
@@ -236,6 +257,12 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
     }
   }
 
+  // Rolled round a tube, the flat tile's inner side is pressed closer by the curvature:
+  // held copies may overlap anywhere, so all are looked at, and where they do, freed.
+  if (round) {
+    std::fill(scan_from.begin(), scan_from.end(), std::uint8_t{1});
+    std::fill(scan_at.begin(), scan_at.end(), std::uint8_t{1});
+  }
   free_where_held_overlap(chains, sizes, start, scan_from, scan_at, options.threads);
   // Tiling jumps the yarn to where the tile put it, with no sweep between to keep its
   // crossings: it must not leave the yarns deeper into each other than the layout did

@@ -19,11 +19,15 @@ namespace knitc::relax {
 struct Repeat {
   int wales = 0, courses = 0;
   int wale0 = 0, course0 = 0;
+  int wale_period = 0, course_period = 0;  // the smallest repeat, of which the block is whole times
 };
 
 // The tile's least size, in loops each way: a repeat smaller than this is taken as many
 // times as it needs (the periodic contacts wrap one repeat each way).
 inline constexpr int least_tile = 4;
+// Courses at most this many at either end of the interior that do not repeat are left out
+// of it (relaxed with the edges): a machine program's cast-on and bind-off take a few.
+inline constexpr int most_trimmed = 4;
 // Loops at most this many loops (across or up) from one that is not tiled stay free in
 // the edges' relaxation; the rest are held where the tile put them.
 inline constexpr int edge_band = 3;
@@ -32,8 +36,8 @@ inline constexpr int edge_band = 3;
 inline constexpr double deeper_by_tiling = 0.1;
 
 // The tile (a whole number of the smallest repeat, at least least_tile loops each way) of
-// a flat layout's interior (its loops but the first and last two courses and needle
-// positions), if it has one, it fits in the interior, and it has at most half the
+// a layout's interior (its loops but the first and last two courses and needle positions,
+// and up to most_trimmed more courses at either end that do not repeat), if it has one, it fits in the interior, and it has at most half the
 // fabric's loops; none for a fabric with tucks. Linear in the fabric for each repeat size tried (at most 64 each way).
 std::optional<Repeat> find_repeat(const layout::Layout& layout);
 

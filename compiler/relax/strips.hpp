@@ -22,7 +22,17 @@ namespace knitc::relax {
 struct LoopGrid {
   int courses = 0, wales = 0;
   std::vector<long> at;
+  // Work in the round (else empty): per course, its needle positions. Past a round's last
+  // lies the next round's first, beside it on the tube (the yarn spirals: the loop left
+  // of wale 0 is the next course's last, the one right of a course's last the course
+  // before's wale 0).
+  std::vector<int> round_needles;
   long operator()(int course, int wale) const {
+    if (!round_needles.empty()) {
+      while (wale < 0 && ++course < courses) wale += round_needles[static_cast<std::size_t>(course)];
+      while (course >= 0 && course < courses && wale >= round_needles[static_cast<std::size_t>(course)])
+        if (--course >= 0) wale -= round_needles[static_cast<std::size_t>(course + 1)];
+    }
     if (course < 0 || course >= courses || wale < 0 || wale >= wales) return -1;
     return at[static_cast<std::size_t>(course) * static_cast<std::size_t>(wales) + static_cast<std::size_t>(wale)];
   }

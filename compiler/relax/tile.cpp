@@ -1,6 +1,7 @@
 // The tile cut from the fabric, and each point's move from its relaxation (tile.hpp).
 #include "relax/tile.hpp"
 
+#include <cmath>
 #include <cstddef>
 
 #include <glm/geometric.hpp>
@@ -178,13 +179,21 @@ Moves tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vec
     const glm::ivec2 place = tile_place(loop);
     const long cls = g(repeat.course0 + place.y, repeat.wale0 + place.x);
     // Tiled only where the loop and its neighbours two loops round are each laid out as
-    // their tile loops: the tile's shape then fits among them (a selvedge loop, or one
-    // beside a band of another stitch, is not).
+    // their tile loops, and are the repeat's neighbours there: the tile's shape then fits
+    // among them (a selvedge loop, or one beside a band of another stitch, is not; nor,
+    // round a tube, one whose neighbour past the round's start is not the repeat's).
+    auto in_period = [](int a, int period) { return period > 0 ? a - floor_div(a, period) * period : a; };
     bool alike_round = true;
     for (int u = -2; alike_round && u <= 2; ++u)
       for (int v = -2; alike_round && v <= 2; ++v) {
         const long other = g(loop.course + u, loop.wale + v);
-        alike_round = other >= 0 && as_tiled[static_cast<std::size_t>(other)];
+        if (other < 0 || !as_tiled[static_cast<std::size_t>(other)]) {
+          alike_round = false;
+          continue;
+        }
+        const glm::ivec2 there = tile_place(layout.loops[static_cast<std::size_t>(other)]);
+        alike_round = in_period(there.x, repeat.wale_period) == in_period(place.x + v, repeat.wale_period) &&
+                      in_period(there.y, repeat.course_period) == in_period(place.y + u, repeat.course_period);
       }
     if (!alike_round) continue;
     const auto t = static_cast<std::size_t>(tile_loop[static_cast<std::size_t>(cls)]);
@@ -200,14 +209,21 @@ Moves tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vec
     // the run's next, or the image of its first a period on.
     std::size_t n = fabric_piece.loop_last[J] - f;
     const std::size_t tile_next = tj + 1 < rest_run.loops.size() ? rest_run.loop_first[tj + 1] : cut.run_period_end[tp];
-    // Laid out alike, the tile's points the fabric's moved by a lattice step.
-    const glm::dvec3 shift = fabric_piece.data_points[f] - rest_run.data_points[tf];
+    // Laid out alike, the tile's points the fabric's moved by a lattice step (taken at the
+    // loop's middle: a tube's point where one round meets the next may be unrolled a
+    // round away, as its other loop's, and is alike a round's step from the tile's).
+    const glm::dvec3 shift = fabric_piece.data_points[f + n / 2] - rest_run.data_points[tf + n / 2];
+    const glm::dvec3 round_step = layout.knitting == Knitting::round
+                                      ? glm::dvec3(layout::course_width(layout, loop.course), layout.course_spacing, 0.0)
+                                      : glm::dvec3(0.0);
     // (The refined points of a loop near a selvedge stray a little from its tile loop's:
     // the interpolation is global. The yarn between loops must be the tile's closely.)
     auto alike = [&](std::size_t from, std::size_t to, double tolerance) {
-      for (std::size_t k = from; k <= to; ++k)
-        if (glm::distance(fabric_piece.data_points[f + k], rest_run.data_points[tf + k] + shift) > tolerance * layout.loop_width)
-          return false;
+      for (std::size_t k = from; k <= to; ++k) {
+        glm::dvec3 off = fabric_piece.data_points[f + k] - (rest_run.data_points[tf + k] + shift);
+        if (round_step.x > 0.0) off -= std::round(off.x / round_step.x) * round_step;
+        if (glm::length(off) > tolerance * layout.loop_width) return false;
+      }
       return true;
     };
     if (!alike(0, n, 1e-2)) continue;
