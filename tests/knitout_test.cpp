@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "knit_graph/knit_graph.hpp"
+#include "measure/crossings.hpp"
+#include "measure/measure.hpp"
 #include "knitout.hpp"
 #include "support.hpp"
 
@@ -250,6 +252,20 @@ TEST(KnitoutImport, AHalfGaugeTubeWithPurlsIsReadInTheRoundByItsLayers) {
   auto t = tally(tube.pattern);
   EXPECT_EQ(t["p"], purls_in_text);
   EXPECT_EQ(t["k"] + t["p"], knits_in_text);
+}
+
+// A knit/purl image on a plain ground (CMU's, tests/knitout/SOURCES.md): most of its
+// interior repeats, so it is relaxed by the ground's tile, the image relaxed with the
+// edges against the held ground; no yarn passes through another, no cores overlap.
+TEST(KnitoutImport, AnImageOnAPlainGroundIsRelaxedByTheGroundsRepeat) {
+  const Imported image = import_file(fs::path(KNITC_SOURCE_DIR) / "tests" / "knitout" / "cmu-image-kp-half-rib.k");
+  const Fabric f = compile(image.pattern, test::centrelines(true));
+  EXPECT_GT(f.relaxation.repeat_wales, 0);
+  EXPECT_GT(f.relaxation.held_share, 0.1);
+  EXPECT_LT(f.relaxation.held_share, 0.9) << "the image is not held";
+  EXPECT_LE(measure::measure(image.pattern, f.layout, f.pieces).deepest_core_penetration, 0.05);
+  ASSERT_TRUE(f.crossings_checked);
+  EXPECT_EQ(measure::passed_through(f.crossings), 0u);
 }
 
 TEST(KnitoutImport, EveryRealProgramReadsIntoAPatternTheKnitGraphTakes) {

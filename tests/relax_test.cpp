@@ -276,6 +276,50 @@ TEST(Repeat, IsFoundFromTheLayout) {
   EXPECT_FALSE(relax::find_repeat(layout::lay_out(at_paper_gauge("half_cardigan")))) << "tucks relax whole";
 }
 
+// Where the interior does not repeat throughout, the repeat is still found: a few courses
+// at either end that differ (a border) are left out of the interior; round a patch of
+// another stitch (a motif on a plain ground, under a tenth of the interior) the block is
+// cut where the ground repeats exactly, and the patch's loops are not tiled.
+TEST(Repeat, IsFoundWhereTheInteriorMostlyRepeats) {
+  auto layout_of = [](const std::string& body) {
+    const std::string source =
+        "pattern { gauge = { loop_width = 4, loop_height = 4.2, thickness = 2 }, yarns = { A = { diameter = 1 } }, "
+        "knitting = \"flat\" }\n" + body;
+    return layout::lay_out(runtime::run_pattern(source, "t.lua").pattern);
+  };
+  const auto bordered = relax::find_repeat(layout_of("cast_on(16)\nrows(4, \"k\")\nfor _ = 1, 8 do row \"k\" row \"p\" end\nrows(4, \"k\")\n"));
+  ASSERT_TRUE(bordered) << "garter borders of 4 rows left out";
+  EXPECT_EQ(bordered->wales, 4);
+  EXPECT_EQ(bordered->course_period, 2);
+  EXPECT_GE(bordered->course0, 4);
+  // Jersey, 24 x 24, with a 3 x 3 patch of reverse stockinette in its middle.
+  std::string motif = "cast_on(24)\n";
+  for (int r = 1; r <= 24; ++r) {
+    const bool patch = r >= 11 && r <= 13;
+    const std::string k = r % 2 == 1 ? "k" : "p", p = r % 2 == 1 ? "p" : "k";
+    motif += "row \"" + (patch ? k + "10, " + p + "3, " + k + "11" : k) + "\"\n";
+  }
+  const layout::Layout with_motif = layout_of(motif);
+  const auto repeat = relax::find_repeat(with_motif);
+  ASSERT_TRUE(repeat);
+  EXPECT_EQ(repeat->wale_period, 1);
+  EXPECT_EQ(repeat->course_period, 2);
+  // The block lies on the ground, clear of the patch (courses 11 to 13, needles 10 to 12).
+  EXPECT_TRUE(repeat->course0 + repeat->courses <= 11 || repeat->wale0 + repeat->wales <= 10 || repeat->wale0 > 12);
+  const Pattern pattern = runtime::run_pattern(
+      "pattern { gauge = { loop_width = 4, loop_height = 4.2, thickness = 2 }, yarns = { A = { diameter = 1 } }, "
+      "knitting = \"flat\" }\n" + motif, "t.lua").pattern;
+  // Tiled round the patch, the yarn there started deeper into itself than laid out (the
+  // patch's loops blended between the ground's moves either side): refused, relaxed whole,
+  // the result as clean either way (tests/knitout_test.cpp has a real program tiled so).
+  const Fabric f = compile(pattern, centrelines(true));
+  EXPECT_LE(measure::measure(pattern, f.layout, f.pieces).deepest_core_penetration, 0.05);
+  EXPECT_TRUE(f.crossings_checked);
+  EXPECT_EQ(measure::passed_through(f.crossings), 0u);
+  EXPECT_FALSE(relax::find_repeat(layout_of("cast_on(12)\nrows(4, \"k\")\nrows(4, \"p\")\nrows(4, \"k1, p1\")\nrows(4, \"k\")\n")))
+      << "bands, each a quarter of it: no repeat";
+}
+
 // Relaxed by its repeat, a swatch's tiled interior is held and its edges relaxed
 // against it: the cores clear, and the tile's loop shape is the swatch's.
 TEST(Repeat, TiledSwatchClearsAndTakesTheTilesShape) {

@@ -38,20 +38,36 @@ struct Interior {
   int course_from, course_to, wale_from, wale_to;  // inclusive
 };
 
-// The smallest period along one axis: every interior loop repeats `period` loops on.
-int smallest_period(const layout::Layout& layout, const LoopGrid& g, const Interior& in, bool across) {
+// The smallest period along one axis at which all but a share `misses` of the interior's
+// loops repeat the loop `period` on (0: every one).
+int smallest_period(const layout::Layout& layout, const LoopGrid& g, const Interior& in, bool across, double misses = 0.0) {
   const int span = across ? in.wale_to - in.wale_from + 1 : in.course_to - in.course_from + 1;
+  const int other = across ? in.course_to - in.course_from + 1 : in.wale_to - in.wale_from + 1;
   for (int period = 1; period <= std::min(64, span / 2); ++period) {
-    bool all = true;
-    for (int c = in.course_from; all && c <= in.course_to; ++c)
-      for (int w = in.wale_from; all && w <= in.wale_to; ++w) {
+    const auto allowed = static_cast<std::size_t>(misses * static_cast<double>(span - period) * static_cast<double>(other));
+    std::size_t missed = 0;
+    for (int c = in.course_from; missed <= allowed && c <= in.course_to; ++c)
+      for (int w = in.wale_from; missed <= allowed && w <= in.wale_to; ++w) {
         const int c2 = across ? c : c + period, w2 = across ? w + period : w;
         if (c2 > in.course_to || w2 > in.wale_to) continue;
-        all = repeats(layout, g(c, w), g(c2, w2), across ? period : 0, across ? 0 : period);
+        if (!repeats(layout, g(c, w), g(c2, w2), across ? period : 0, across ? 0 : period)) ++missed;
       }
-    if (all) return period;
+    if (missed <= allowed) return period;
   }
   return 0;
+}
+
+// Whether the block of `r` and a period past it either way (within the interior) repeat
+// exactly: a tile to cut where the interior mostly repeats.
+bool clean_block(const layout::Layout& layout, const LoopGrid& g, const Interior& in, const Repeat& r) {
+  for (int c = r.course0; c < r.course0 + r.courses + r.course_period && c <= in.course_to; ++c)
+    for (int w = r.wale0; w < r.wale0 + r.wales + r.wale_period && w <= in.wale_to; ++w) {
+      if (g(c, w) < 0) return false;
+      if (w + r.wale_period <= in.wale_to && !repeats(layout, g(c, w), g(c, w + r.wale_period), r.wale_period, 0)) return false;
+      if (c + r.course_period <= in.course_to && !repeats(layout, g(c, w), g(c + r.course_period, w), 0, r.course_period))
+        return false;
+    }
+  return true;
 }
 
 }  // namespace
@@ -103,18 +119,32 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
       p = smallest_period(layout, g, in, true);
       q = p == 0 ? 0 : smallest_period(layout, g, in, false);
     }
+  // Else the smallest period most of the whole interior repeats in (an image of knit and
+  // purl whose repeat breaks where its halves meet, a motif on a plain ground): the loops
+  // that do not repeat are relaxed with the edges.
+  if (p == 0 || q == 0) {
+    in = Interior{2, layout.courses - 3, 2, layout.wales - 3};
+    for (int c = in.course_from; c <= in.course_to; ++c)
+      in.wale_to = std::min(in.wale_to, layout.needle[static_cast<std::size_t>(c)] - 3);
+    if (in.wale_to - in.wale_from + 1 < 4 || in.course_to - in.course_from + 1 < 8) return std::nullopt;
+    p = smallest_period(layout, g, in, true, most_not_repeating);
+    q = p == 0 ? 0 : smallest_period(layout, g, in, false, most_not_repeating);
+  }
   if (p == 0 || q == 0) return std::nullopt;
   Repeat r;
   r.wales = p * ((least_tile + p - 1) / p);
   r.courses = q * ((least_tile + q - 1) / q);
-  r.wale0 = in.wale_from;
-  r.course0 = in.course_from;
   r.wale_period = p;
   r.course_period = q;
-  if (r.wale0 + r.wales - 1 > in.wale_to || r.course0 + r.courses - 1 > in.course_to) return std::nullopt;
-  for (int c = r.course0; c < r.course0 + r.courses; ++c)
-    for (int w = r.wale0; w < r.wale0 + r.wales; ++w)
-      if (g(c, w) < 0) return std::nullopt;
+  // The block: the first (up, then across) that repeats exactly with a period round it.
+  bool found = false;
+  for (int c = in.course_from; !found && c + r.courses - 1 <= in.course_to; ++c)
+    for (int w = in.wale_from; !found && w + r.wales - 1 <= in.wale_to; ++w) {
+      r.course0 = c;
+      r.wale0 = w;
+      found = clean_block(layout, g, in, r);
+    }
+  if (!found) return std::nullopt;
   if (2 * static_cast<std::size_t>(r.wales * r.courses) > layout.loops.size()) return std::nullopt;
   return r;
 }

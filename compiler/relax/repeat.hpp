@@ -28,6 +28,9 @@ inline constexpr int least_tile = 4;
 // Courses at most this many at either end of the interior that do not repeat are left out
 // of it (relaxed with the edges): a machine program's cast-on and bind-off take a few.
 inline constexpr int most_trimmed = 4;
+// Where no period repeats across the whole interior, one that all but this share of its
+// loops repeat in is taken, the rest relaxed with the edges (docs/relaxation.md).
+inline constexpr double most_not_repeating = 0.1;
 // Loops at most this many loops (across or up) from one that is not tiled stay free in
 // the edges' relaxation; the rest are held where the tile put them.
 inline constexpr int edge_band = 3;

@@ -165,18 +165,31 @@ Moves tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vec
     const int dc = loop.course - repeat.course0, dw = loop.wale - repeat.wale0;
     return glm::ivec2(dw - floor_div(dw, repeat.wales) * repeat.wales, dc - floor_div(dc, repeat.courses) * repeat.courses);
   };
+  // Each loop's place in the tile: its place on the lattice where it is laid out as the
+  // tile's loop there, else the first place that it is (past a break in a mostly
+  // repeating interior, its repeat runs on shifted); none if no place is.
   std::vector<std::uint8_t> as_tiled(layout.loops.size(), 0);
+  std::vector<glm::ivec2> place_of(layout.loops.size(), glm::ivec2(0));
+  auto laid_as = [&](const layout::Loop& loop, std::size_t l, glm::ivec2 t) {
+    return repeats(layout, g(repeat.course0 + t.y, repeat.wale0 + t.x), static_cast<long>(l), loop.wale - (repeat.wale0 + t.x),
+                   loop.course - (repeat.course0 + t.y));
+  };
   for (std::size_t l = 0; l < layout.loops.size(); ++l) {
     const auto& loop = layout.loops[l];
-    const glm::ivec2 t = tile_place(loop);
-    as_tiled[l] = repeats(layout, g(repeat.course0 + t.y, repeat.wale0 + t.x), static_cast<long>(l), loop.wale - (repeat.wale0 + t.x),
-                          loop.course - (repeat.course0 + t.y));
+    place_of[l] = tile_place(loop);
+    as_tiled[l] = laid_as(loop, l, place_of[l]);
+    for (int y = 0; !as_tiled[l] && y < repeat.courses; ++y)
+      for (int x = 0; !as_tiled[l] && x < repeat.wales; ++x)
+        if (laid_as(loop, l, glm::ivec2(x, y))) {
+          place_of[l] = glm::ivec2(x, y);
+          as_tiled[l] = 1;
+        }
   }
   for (std::size_t l = 0; l < layout.loops.size(); ++l) {
     const auto& loop = layout.loops[l];
     const auto [pi, pj] = cut.owner[l];
     if (pi < 0 || !as_tiled[l]) continue;
-    const glm::ivec2 place = tile_place(loop);
+    const glm::ivec2 place = place_of[l];
     const long cls = g(repeat.course0 + place.y, repeat.wale0 + place.x);
     // Tiled only where the loop and its neighbours two loops round are each laid out as
     // their tile loops, and are the repeat's neighbours there: the tile's shape then fits
@@ -191,7 +204,7 @@ Moves tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vec
           alike_round = false;
           continue;
         }
-        const glm::ivec2 there = tile_place(layout.loops[static_cast<std::size_t>(other)]);
+        const glm::ivec2 there = place_of[static_cast<std::size_t>(other)];
         alike_round = in_period(there.x, repeat.wale_period) == in_period(place.x + v, repeat.wale_period) &&
                       in_period(there.y, repeat.course_period) == in_period(place.y + u, repeat.course_period);
       }
