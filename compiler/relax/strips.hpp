@@ -8,6 +8,7 @@
 // edge's length. Internal to relax/.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -28,10 +29,17 @@ struct LoopGrid {
   // before's wale 0).
   std::vector<int> round_needles;
   long operator()(int course, int wale) const {
-    if (!round_needles.empty()) {
-      while (wale < 0 && ++course < courses) wale += round_needles[static_cast<std::size_t>(course)];
-      while (course >= 0 && course < courses && wale >= round_needles[static_cast<std::size_t>(course)])
-        if (--course >= 0) wale -= round_needles[static_cast<std::size_t>(course + 1)];
+    if (!round_needles.empty() && courses > 0) {
+      // (A course past either end, asked for by a neighbourhood, goes round as the nearest.)
+      auto needles = [&](int c) { return round_needles[static_cast<std::size_t>(std::clamp(c, 0, courses - 1))]; };
+      while (wale < 0) {
+        if (needles(++course) <= 0) return -1;
+        wale += needles(course);
+      }
+      while (wale >= needles(course)) {
+        if (needles(course) <= 0) return -1;
+        wale -= needles(course--);
+      }
     }
     if (course < 0 || course >= courses || wale < 0 || wale >= wales) return -1;
     return at[static_cast<std::size_t>(course) * static_cast<std::size_t>(wales) + static_cast<std::size_t>(wale)];
