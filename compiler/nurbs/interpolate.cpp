@@ -5,6 +5,7 @@
 // elimination stable.
 #include "nurbs.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <stdexcept>
@@ -124,8 +125,22 @@ Interpolant interpolate(std::span<const Point> q, const InterpolationOptions& op
   }
   c.points.assign(controls, Point(0.0));
 
-  // The band: a row's span lies within p columns of its diagonal either way.
-  BandMatrix m(controls, p + 1, p + 1);
+  // The band: the widest a data row's entries (its span's p + 1 columns) lie from its
+  // diagonal, found by walking the spans once. With averaged knots it is under p either
+  // side (P&T 9.2.1), the half of the widest a row could be: the matrix of a garment's
+  // million-point curve was most of this stage's memory.
+  int lower = 1, upper = 1;  // the end derivatives' rows
+  {
+    const int last = static_cast<int>(c.points.size()) - 1;
+    int walk = p;
+    for (int k = with_ends ? 1 : 0; k <= (with_ends ? n - 1 : n); ++k) {
+      while (walk < last && c.knots[static_cast<std::size_t>(walk) + 1] <= ub[k]) ++walk;
+      const int row = with_ends ? k + 1 : k;
+      lower = std::max(lower, row - (walk - p));
+      upper = std::max(upper, walk - row);
+    }
+  }
+  BandMatrix m(controls, lower, upper);
   std::vector<Point> rhs(controls);
   int span = p;
   if (!with_ends) {

@@ -13,40 +13,48 @@ namespace knitc::relax {
 
 namespace {
 
-// The points of every piece in one array, with what a contact needs to know of each.
+// The points of every piece by one index, with what a contact needs to know of each.
+// The positions are read where they are, in the pieces: a garment's copy of them was
+// most of this stage's fresh memory (docs/performance.md).
 struct Points {
-  std::vector<glm::dvec3> pos;
+  std::vector<const glm::dvec3*> data;  // per piece, its first point
   std::vector<double> along;            // mm along its piece
   std::vector<double> piece_free_r, piece_shell;  // per piece: free radius, and free minus core radius, mm
   double free_r(std::size_t i) const { return piece_free_r[piece[i]]; }
   double shell(std::size_t i) const { return piece_shell[piece[i]]; }
+  const glm::dvec3& pos(std::size_t i) const { return data[piece[i]][i - first[piece[i]]]; }
   std::vector<std::uint32_t> piece;
   std::vector<std::size_t> first;       // per piece, then the end
+  std::size_t size() const { return along.size(); }
 };
 
 Points points_of(const std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes) {
   Points p;
+  std::size_t n = 0;
+  for (const auto& piece : pieces) n += piece.data_points.size();
+  p.along.reserve(n);
+  p.piece.reserve(n);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    p.first.push_back(p.pos.size());
+    p.first.push_back(p.along.size());
+    p.data.push_back(pieces[i].data_points.data());
     const yarn::Size& size = sizes[static_cast<std::size_t>(pieces[i].yarn)];
     p.piece_free_r.push_back(0.5 * size.free_diameter);
     p.piece_shell.push_back(0.5 * (size.free_diameter - size.core_diameter));
     double s = 0.0;
     for (std::size_t k = 0; k < pieces[i].data_points.size(); ++k) {
       if (k > 0) s += glm::distance(pieces[i].data_points[k - 1], pieces[i].data_points[k]);
-      p.pos.push_back(pieces[i].data_points[k]);
       p.along.push_back(s);
       p.piece.push_back(static_cast<std::uint32_t>(i));
     }
   }
-  p.first.push_back(p.pos.size());
+  p.first.push_back(p.along.size());
   return p;
 }
 
 // The unit tangent at point k of the piece running over [from, to).
 glm::dvec3 tangent(const Points& p, std::size_t k, std::size_t from, std::size_t to) {
   const std::size_t a = k > from ? k - 1 : k, b = k + 1 < to ? k + 1 : k;
-  const glm::dvec3 d = p.pos[b] - p.pos[a];
+  const glm::dvec3 d = p.pos(b) - p.pos(a);
   const double l = glm::length(d);
   return l > 0.0 ? d / l : glm::dvec3(0.0);
 }
@@ -56,23 +64,23 @@ glm::dvec3 tangent(const Points& p, std::size_t k, std::size_t from, std::size_t
 void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes, int threads,
            const std::vector<std::uint32_t>& same_as) {
   const Points p = points_of(pieces, sizes);
-  const std::size_t n = p.pos.size();
+  const std::size_t n = p.size();
   assert(same_as.empty() || same_as.size() == n);
   auto own = [&](std::size_t i) { return same_as.empty() || same_as[i] == i; };
   std::vector<glm::dvec3> pressed(n, glm::dvec3(0.0));
   double thickest = 0.0, longest = 0.0;
   for (std::size_t i = 0; i < n; ++i) thickest = std::max(thickest, 2.0 * p.free_r(i));
   for (std::size_t i = 0; i + 1 < n; ++i)
-    if (p.piece[i] == p.piece[i + 1]) longest = std::max(longest, glm::distance(p.pos[i], p.pos[i + 1]));
+    if (p.piece[i] == p.piece[i + 1]) longest = std::max(longest, glm::distance(p.pos(i), p.pos(i + 1)));
   if (thickest > 0.0 && n > 1) {
     // Segments by their midpoints: a cell holds every segment a point's free surface can
     // reach from the next cell.
     spatial::Columns grid(thickest + longest);
     // Only the segments a pressed point looks at (its cell's 3 x 3 columns).
-    const spatial::ColumnMask wanted(p.pos, grid, own);
+    const spatial::ColumnMask wanted(n, [&](std::size_t i) { return grid.cell_of(p.pos(i)); }, own);
     for (std::size_t i = 0; i + 1 < n; ++i)
       if (p.piece[i] == p.piece[i + 1]) {
-        const glm::i64vec3 cell = grid.cell_of(0.5 * (p.pos[i] + p.pos[i + 1]));
+        const glm::i64vec3 cell = grid.cell_of(0.5 * (p.pos(i) + p.pos(i + 1)));
         if (wanted.holds(cell)) grid.add(cell, static_cast<std::uint32_t>(i));
       }
     grid.index();
@@ -84,14 +92,16 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
         const std::size_t from = p.first[p.piece[i]], to = p.first[p.piece[i] + 1];
         double deepest = 0.0;
         glm::dvec3 normal(0.0);
-        grid.near(grid.cell_of(p.pos[i]), [&](const spatial::Columns::Entry& e) {
+        const glm::dvec3& at = p.pos(i);
+        grid.near(grid.cell_of(at), [&](const spatial::Columns::Entry& e) {
           const std::size_t j = e.item;
           const double along_j = 0.5 * (p.along[j] + p.along[j + 1]);
           if (p.piece[j] == p.piece[i] && std::abs(along_j - p.along[i]) <= 1.8 * (p.free_r(i) + p.free_r(j))) return;
-          const glm::dvec3 seg = p.pos[j + 1] - p.pos[j];
+          const glm::dvec3& pj = p.pos(j);
+          const glm::dvec3 seg = (&pj)[1] - pj;  // a segment's two points are one piece's
           const double len2 = glm::dot(seg, seg);
-          const double t = len2 > 0.0 ? std::clamp(glm::dot(p.pos[i] - p.pos[j], seg) / len2, 0.0, 1.0) : 0.0;
-          const glm::dvec3 away = p.pos[i] - (p.pos[j] + t * seg);
+          const double t = len2 > 0.0 ? std::clamp(glm::dot(at - pj, seg) / len2, 0.0, 1.0) : 0.0;
+          const glm::dvec3 away = at - (pj + t * seg);
           const double dist = glm::length(away);
           const double overlap = p.free_r(i) + p.free_r(j) - dist;
           if (overlap <= 0.0 || dist <= 0.0) return;
@@ -135,15 +145,15 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     const glm::dvec3& b = v[i + 1 < to ? i + 1 : i];
     return 0.25 * a + 0.5 * v[i] + 0.25 * b;
   };
+  // The two passes in one: each point's second pass reads its neighbours' first, made
+  // where they are needed (the same sums, in the same order, as two arrays gave).
   constexpr std::size_t block = 16384;
   const std::size_t blocks = (n + block - 1) / block;
-  std::vector<glm::dvec3> once(n);
-  parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
-    for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) once[i] = smoothed(pressed, i);
-  });
   parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
     for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
-      const glm::dvec3 twice = smoothed(once, i);
+      const std::size_t from_i = p.first[p.piece[i]], to_i = p.first[p.piece[i] + 1];
+      const glm::dvec3 before = smoothed(pressed, i > from_i ? i - 1 : i), after = smoothed(pressed, i + 1 < to_i ? i + 1 : i);
+      const glm::dvec3 twice = 0.25 * before + 0.5 * smoothed(pressed, i) + 0.25 * after;
       const std::size_t piece = p.piece[i], from = p.first[piece];
       const glm::dvec3 t = tangent(p, i, from, p.first[piece + 1]);
       const double amount = glm::length(twice);
