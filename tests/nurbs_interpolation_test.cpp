@@ -337,6 +337,34 @@ TEST(NurbsInterpolate, EndDerivativesArePassedThroughAndMet) {
   EXPECT_LE(vs_ref.error, 1e-9) << vs_ref.where;
 }
 
+TEST(NurbsInterpolate, ALongCurveIsTheSameOnAnyNumberOfThreads) {
+  // Past one block of rows (16384), the rows are filled in blocks on several threads,
+  // each walking its spans from the first it was given: the same curve, bit for bit,
+  // with and without end derivatives, and through every point.
+  std::mt19937 rng(1414);
+  const auto q = random_walk(rng, 40000);
+  const double scale = magnitude(q);
+  for (const bool ends : {false, true}) {
+    SCOPED_TRACE(ends ? "end derivatives" : "no end derivatives");
+    InterpolationOptions o;
+    if (ends) {
+      o.start_derivative = Point(1.0, 0.0, 0.0);
+      o.end_derivative = Point(0.0, 1.0, 0.0);
+    }
+    o.threads = 1;
+    const auto one = nurbs::interpolate(q, o);
+    o.threads = 3;
+    const auto three = nurbs::interpolate(q, o);
+    ASSERT_EQ(one.curve.points.size(), three.curve.points.size());
+    ASSERT_EQ(one.curve.knots, three.curve.knots);
+    for (std::size_t i = 0; i < one.curve.points.size(); ++i) ASSERT_EQ(one.curve.points[i], three.curve.points[i]) << "control " << i;
+    double worst = 0.0;
+    for (std::size_t k = 0; k < q.size(); k += 97)
+      worst = std::max(worst, glm::distance(nurbs::evaluate(three.curve, three.parameters[k]), q[k]) / scale);
+    EXPECT_LE(worst, 1e-9);
+  }
+}
+
 TEST(NurbsInterpolate, EndDerivativesOfTwoPointsGiveTheHermiteCubic) {
   const Point a(0, 0, 0), b(2, 1, 0), d0(3, 0, 1), d1(0, 3, -1);
   InterpolationOptions o;

@@ -52,6 +52,7 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
   assert(same_as.empty() || same_as.size() == piece.path.data_points.size());
   nurbs::InterpolationOptions io;
   io.parametrisation = options.parametrisation;
+  io.threads = options.threads;
   piece.curve = nurbs::interpolate(piece.path.data_points, io);
 
   // Sample span by span between the loops' ends.

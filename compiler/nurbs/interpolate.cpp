@@ -5,9 +5,12 @@
 // elimination stable.
 #include "nurbs.hpp"
 
+#include "parallel.hpp"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -19,13 +22,20 @@ namespace {
 // A square matrix stored by diagonals: entry (r, c) with -lower <= c - r <= upper.
 class BandMatrix {
  public:
+  // The cells are left unset: each row is cleared (clear_row) by whoever fills it, so a
+  // garment's rows are first written in parallel, not zeroed by one thread first.
   BandMatrix(int size, int lower, int upper)
       : n_(size), lower_(lower), upper_(upper),
-        cells_(static_cast<std::size_t>(size) * (lower + upper + 1), 0.0) {}
+        cells_(new double[static_cast<std::size_t>(size) * static_cast<std::size_t>(lower + upper + 1)]) {}
+
+  void clear_row(int r) {
+    double* first = cells_.get() + static_cast<std::size_t>(r) * static_cast<std::size_t>(lower_ + upper_ + 1);
+    std::fill(first, first + lower_ + upper_ + 1, 0.0);
+  }
 
   double& at(int r, int c) {
     if (c - r < -lower_ || c - r > upper_) throw std::logic_error("nurbs: entry outside the band");
-    return cells_[static_cast<std::size_t>(r) * (lower_ + upper_ + 1) + (c - r + lower_)];
+    return cells_[static_cast<std::size_t>(r) * static_cast<std::size_t>(lower_ + upper_ + 1) + static_cast<std::size_t>(c - r + lower_)];
   }
 
   // In-place LU without pivoting, then solves for every right-hand side column. (The
@@ -57,10 +67,10 @@ class BandMatrix {
  private:
   // (r, c) inside the band, unchecked; row_of(r)[c] is (r, c) for any c in the band (the
   // row's cells, shifted so a column indexes them).
-  double* row_of(int r) { return cells_.data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(lower_ + upper_) + static_cast<std::size_t>(lower_); }
+  double* row_of(int r) { return cells_.get() + static_cast<std::size_t>(r) * static_cast<std::size_t>(lower_ + upper_) + static_cast<std::size_t>(lower_); }
   double& cell(int r, int c) { return row_of(r)[c]; }
   int n_, lower_, upper_;
-  std::vector<double> cells_;
+  std::unique_ptr<double[]> cells_;
 };
 
 std::vector<double> data_parameters(std::span<const Point> q, Parametrisation kind) {
@@ -81,8 +91,7 @@ std::vector<double> data_parameters(std::span<const Point> q, Parametrisation ki
 
 // Fills row `row` of the matrix with the basis functions at u. span: the knot span found
 // for the last row (the rows' parameters ascend), walked on to u's.
-void put_basis_row(BandMatrix& m, const Curve& c, int row, double u, int& span) {
-  const int last = static_cast<int>(c.points.size()) - 1;
+void put_basis_row(BandMatrix& m, const Curve& c, int last, int row, double u, int& span) {
   while (span < last && c.knots[static_cast<std::size_t>(span) + 1] <= u) ++span;
   assert(span == find_span(c, u));
   BasisTable N;
@@ -123,46 +132,55 @@ Interpolant interpolate(std::span<const Point> q, const InterpolationOptions& op
       c.knots[j + p + 1] = s / p;
     }
   }
-  c.points.assign(controls, Point(0.0));
+  const int last = controls - 1;  // the last control point's index
 
   // The band: the widest a data row's entries (its span's p + 1 columns) lie from its
-  // diagonal, found by walking the spans once. With averaged knots it is under p either
-  // side (P&T 9.2.1), the half of the widest a row could be: the matrix of a garment's
-  // million-point curve was most of this stage's memory.
+  // diagonal, found by walking the spans once: p either side with averaged knots, where
+  // p + 1 was allowed (a garment's million-point curve's matrix was most of this stage's
+  // memory). Each block of rows starts its walk where the walk found its first span.
+  constexpr int block = 16384;
+  const int first_row = with_ends ? 1 : 0, last_row = with_ends ? n - 1 : n;  // data rows' k
+  const int rows = std::max(0, last_row - first_row + 1);
+  const int blocks = (rows + block - 1) / block;
+  std::vector<int> block_span(static_cast<std::size_t>(blocks), p);
   int lower = 1, upper = 1;  // the end derivatives' rows
   {
-    const int last = static_cast<int>(c.points.size()) - 1;
     int walk = p;
-    for (int k = with_ends ? 1 : 0; k <= (with_ends ? n - 1 : n); ++k) {
+    for (int k = first_row; k <= last_row; ++k) {
       while (walk < last && c.knots[static_cast<std::size_t>(walk) + 1] <= ub[k]) ++walk;
+      if ((k - first_row) % block == 0) block_span[static_cast<std::size_t>((k - first_row) / block)] = walk;
       const int row = with_ends ? k + 1 : k;
       lower = std::max(lower, row - (walk - p));
       upper = std::max(upper, walk - row);
     }
   }
   BandMatrix m(controls, lower, upper);
-  std::vector<Point> rhs(controls);
-  int span = p;
-  if (!with_ends) {
-    for (int k = 0; k <= n; ++k) {
-      put_basis_row(m, c, k, ub[k], span);
-      rhs[k] = q[k];
+  std::vector<Point> rhs;
+  rhs.reserve(static_cast<std::size_t>(controls));
+  if (with_ends) rhs.resize(static_cast<std::size_t>(controls));
+  else rhs.assign(q.begin(), q.end());
+  parallel_for(static_cast<std::size_t>(blocks), thread_count(options.threads), [&](std::size_t b) {
+    int span = block_span[b];
+    const int from = first_row + static_cast<int>(b) * block, to = std::min(last_row, from + block - 1);
+    for (int k = from; k <= to; ++k) {
+      const int row = with_ends ? k + 1 : k;
+      m.clear_row(row);
+      put_basis_row(m, c, last, row, ub[static_cast<std::size_t>(k)], span);
+      if (with_ends) rhs[static_cast<std::size_t>(row)] = q[static_cast<std::size_t>(k)];
     }
-  } else {
+  });
+  if (with_ends) {
     const double first = c.knots[p + 1];
-    const double last = c.knots[controls - 1];  // u_{m-p-1} with m the last knot index
+    const double last_knot = c.knots[controls - 1];  // u_{m-p-1} with m the last knot index
+    for (const int r : {0, 1, n + 1, n + 2}) m.clear_row(r);
     m.at(0, 0) = 1.0;
     rhs[0] = q[0];
     m.at(1, 0) = -1.0;
     m.at(1, 1) = 1.0;
     rhs[1] = (first / p) * *options.start_derivative;
-    for (int k = 1; k < n; ++k) {
-      put_basis_row(m, c, k + 1, ub[k], span);
-      rhs[k + 1] = q[k];
-    }
     m.at(n + 1, n + 1) = -1.0;
     m.at(n + 1, n + 2) = 1.0;
-    rhs[n + 1] = ((1.0 - last) / p) * *options.end_derivative;
+    rhs[n + 1] = ((1.0 - last_knot) / p) * *options.end_derivative;
     m.at(n + 2, n + 2) = 1.0;
     rhs[n + 2] = q[n];
   }

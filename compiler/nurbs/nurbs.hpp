@@ -106,6 +106,8 @@ struct InterpolationOptions {
   // chord length L is asked for as L * t.
   std::optional<Point> start_derivative;
   std::optional<Point> end_derivative;
+  // Threads the system's rows are filled on (0: every core); the curve is the same for any.
+  int threads = 1;
 };
 
 struct Interpolant {
