@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <memory>
 
 #include <glm/geometric.hpp>
 
@@ -26,6 +27,7 @@ struct Points {
   std::vector<std::uint32_t> piece;
   std::vector<std::size_t> first;       // per piece, then the end
   std::size_t size() const { return along.size(); }
+  double thickest = 0.0, longest = 0.0;  // the largest free diameter, and step along a piece, mm
 };
 
 Points points_of(const std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes) {
@@ -40,9 +42,14 @@ Points points_of(const std::vector<yarn_paths::Piece>& pieces, const std::vector
     const yarn::Size& size = sizes[static_cast<std::size_t>(pieces[i].yarn)];
     p.piece_free_r.push_back(0.5 * size.free_diameter);
     p.piece_shell.push_back(0.5 * (size.free_diameter - size.core_diameter));
+    if (!pieces[i].data_points.empty()) p.thickest = std::max(p.thickest, size.free_diameter);
     double s = 0.0;
     for (std::size_t k = 0; k < pieces[i].data_points.size(); ++k) {
-      if (k > 0) s += glm::distance(pieces[i].data_points[k - 1], pieces[i].data_points[k]);
+      if (k > 0) {
+        const double step = glm::distance(pieces[i].data_points[k - 1], pieces[i].data_points[k]);
+        s += step;
+        p.longest = std::max(p.longest, step);
+      }
       p.along.push_back(s);
       p.piece.push_back(static_cast<std::uint32_t>(i));
     }
@@ -67,11 +74,10 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
   const std::size_t n = p.size();
   assert(same_as.empty() || same_as.size() == n);
   auto own = [&](std::size_t i) { return same_as.empty() || same_as[i] == i; };
-  std::vector<glm::dvec3> pressed(n, glm::dvec3(0.0));
-  double thickest = 0.0, longest = 0.0;
-  for (std::size_t i = 0; i < n; ++i) thickest = std::max(thickest, 2.0 * p.free_r(i));
-  for (std::size_t i = 0; i + 1 < n; ++i)
-    if (p.piece[i] == p.piece[i + 1]) longest = std::max(longest, glm::distance(p.pos(i), p.pos(i + 1)));
+  // Each point's direction, set (zero where not pressed) by the block it is in: a
+  // garment's 43 MB are first written in parallel, not zeroed by one thread first.
+  std::unique_ptr<glm::dvec3[]> pressed(new glm::dvec3[n]);
+  const double thickest = p.thickest, longest = p.longest;
   if (thickest > 0.0 && n > 1) {
     // Segments by their midpoints: a cell holds every segment a point's free surface can
     // reach from the next cell.
@@ -88,6 +94,7 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     constexpr std::size_t block = 4096;
     parallel_for((n + block - 1) / block, thread_count(threads), [&](std::size_t b) {
       for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
+        pressed[i] = glm::dvec3(0.0);
         if (!own(i)) continue;
         const std::size_t from = p.first[p.piece[i]], to = p.first[p.piece[i] + 1];
         double deepest = 0.0;
@@ -125,6 +132,8 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     });
     for (std::size_t i = 0; i < n; ++i)
       if (!own(i)) pressed[i] = pressed[same_as[i]];
+  } else {
+    std::fill(pressed.get(), pressed.get() + n, glm::dvec3(0.0));
   }
   // An ellipse is the same turned half a turn: each piece's directions turned to agree
   // with the last pressed one before it, then smoothed along the piece (twice by 1/4,
@@ -139,7 +148,7 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     pieces[piece].pressed.assign(p.first[piece + 1] - p.first[piece], glm::dvec3(0.0));
   }
   // A pass reads its neighbours in the piece, the ends repeated.
-  auto smoothed = [&](const std::vector<glm::dvec3>& v, std::size_t i) {
+  auto smoothed = [&](const glm::dvec3* v, std::size_t i) {
     const std::size_t from = p.first[p.piece[i]], to = p.first[p.piece[i] + 1];
     const glm::dvec3& a = v[i > from ? i - 1 : i];
     const glm::dvec3& b = v[i + 1 < to ? i + 1 : i];
@@ -152,8 +161,8 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
   parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
     for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
       const std::size_t from_i = p.first[p.piece[i]], to_i = p.first[p.piece[i] + 1];
-      const glm::dvec3 before = smoothed(pressed, i > from_i ? i - 1 : i), after = smoothed(pressed, i + 1 < to_i ? i + 1 : i);
-      const glm::dvec3 twice = 0.25 * before + 0.5 * smoothed(pressed, i) + 0.25 * after;
+      const glm::dvec3 before = smoothed(pressed.get(), i > from_i ? i - 1 : i), after = smoothed(pressed.get(), i + 1 < to_i ? i + 1 : i);
+      const glm::dvec3 twice = 0.25 * before + 0.5 * smoothed(pressed.get(), i) + 0.25 * after;
       const std::size_t piece = p.piece[i], from = p.first[piece];
       const glm::dvec3 t = tangent(p, i, from, p.first[piece + 1]);
       const double amount = glm::length(twice);

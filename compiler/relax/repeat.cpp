@@ -306,14 +306,14 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   double thickest = 0.0;
   for (const auto& size : sizes) thickest = std::max(thickest, size.free_diameter);
   const double reach = 3.0 * thickest;
-  std::vector<std::uint8_t> needed = near_free(start, reach);
+  std::vector<std::uint8_t> needed = near_free(start, reach, options.threads);
   const std::vector<std::uint8_t> held_by_tile = start.held;
   const Strips strips = options.by_strips && !round
                             ? relax_strips(layout, chains, sizes, options, repeat, relaxed_tile.stats.period, g, loop_held, start)
                             : Strips{};
   if (strips.refused) return std::nullopt;
   // The interior's copies (same_as, below) are judged before the strips were held.
-  Crop part = crop(chains, start, strips.points > 0 ? near_free(start, reach) : needed);
+  Crop part = crop(chains, start, strips.points > 0 ? near_free(start, reach, options.threads) : needed);
   part.needed = std::move(needed);
   if (deeper_than_laid(layout, part.pieces, sizes, part.start, options.threads)) return std::nullopt;
   Options edge_options = options;

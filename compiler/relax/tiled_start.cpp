@@ -15,20 +15,23 @@ namespace knitc::relax {
 
 void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes, Start& start,
                              const std::vector<std::uint8_t>& look_from, const std::vector<std::uint8_t>& look_at, int threads) {
-  std::vector<double> core, along;
+  std::vector<double> piece_core, along;  // per piece: core radius, mm; per point: mm along its piece
   std::vector<std::uint32_t> piece;
+  along.reserve(start.pos.size());
+  piece.reserve(start.pos.size());
   double thickest = 0.0;
   for (std::size_t i = 0; i < chains.size(); ++i) {
     const yarn::Size& size = sizes[static_cast<std::size_t>(chains[i].yarn)];
     thickest = std::max(thickest, size.free_diameter);
+    piece_core.push_back(0.5 * size.core_diameter);
     double s = 0.0;
     for (std::size_t k = 0; k < chains[i].data_points.size(); ++k) {
       if (k > 0) s += glm::distance(chains[i].data_points[k - 1], chains[i].data_points[k]);
-      core.push_back(0.5 * size.core_diameter);
       along.push_back(s);
       piece.push_back(static_cast<std::uint32_t>(i));
     }
   }
+  auto core = [&](std::size_t i) { return piece_core[piece[i]]; };
   if (thickest <= 0.0) return;
   spatial::Columns grid(thickest);
   for (std::size_t i = 0; i < start.pos.size(); ++i)
@@ -43,7 +46,7 @@ void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const
         const std::size_t j = e.item;
         if (j <= i) return;
         if (piece[i] == piece[j] && std::abs(along[i] - along[j]) <= 2.0 * thickest) return;  // one stretch of yarn
-        if (glm::distance(start.pos[i], start.pos[j]) < core[i] + core[j]) {
+        if (glm::distance(start.pos[i], start.pos[j]) < core(i) + core(j)) {
           overlapping[b].push_back(static_cast<std::uint32_t>(i));
           overlapping[b].push_back(static_cast<std::uint32_t>(j));
         }
@@ -60,7 +63,7 @@ void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const
 }
 
 // Per point: 1 free, 2 held within `reach` (mm) of a free one, 0 neither.
-std::vector<std::uint8_t> near_free(const Start& start, double reach) {
+std::vector<std::uint8_t> near_free(const Start& start, double reach, int threads) {
   std::vector<std::uint8_t> needed(start.pos.size(), 0);
   spatial::Columns grid(reach);
   for (std::size_t g = 0; g < start.pos.size(); ++g)
@@ -71,14 +74,18 @@ std::vector<std::uint8_t> near_free(const Start& start, double reach) {
   grid.index();
   // Only points in a column beside a free one's can be within reach (the cell's width).
   const spatial::ColumnMask beside_free(start.pos, grid, [&](std::size_t g) { return !start.held[g]; });
-  for (std::size_t g = 0; g < start.pos.size(); ++g) {
-    if (needed[g]) continue;
-    const glm::i64vec3 cell = grid.cell_of(start.pos[g]);
-    if (!beside_free.holds(cell)) continue;
-    grid.near(cell, [&](const spatial::Columns::Entry& e) {
-      if (!needed[g] && glm::distance(start.pos[e.item], start.pos[g]) <= reach) needed[g] = 2;
-    });
-  }
+  // Each point answers for itself: blocks of points in parallel.
+  const std::size_t n = start.pos.size(), block = 4096;
+  parallel_for((n + block - 1) / block, thread_count(threads), [&](std::size_t b) {
+    for (std::size_t g = b * block; g < std::min(n, (b + 1) * block); ++g) {
+      if (needed[g]) continue;
+      const glm::i64vec3 cell = grid.cell_of(start.pos[g]);
+      if (!beside_free.holds(cell)) continue;
+      grid.near(cell, [&](const spatial::Columns::Entry& e) {
+        if (!needed[g] && glm::distance(start.pos[e.item], start.pos[g]) <= reach) needed[g] = 2;
+      });
+    }
+  });
   return needed;
 }
 

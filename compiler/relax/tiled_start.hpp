@@ -35,8 +35,9 @@ struct Crop {
   std::vector<std::uint8_t> needed;  // per point of the fabric: 1 free, 2 held within reach of a free one, 0 neither
 };
 
-// Per point: 1 free, 2 held within `reach` (mm) of a free one, 0 neither.
-std::vector<std::uint8_t> near_free(const Start& start, double reach);
+// Per point: 1 free, 2 held within `reach` (mm) of a free one, 0 neither; the same on any
+// number of threads.
+std::vector<std::uint8_t> near_free(const Start& start, double reach, int threads);
 
 // `needed`: near_free's.
 Crop crop(const std::vector<yarn_paths::Piece>& chains, const Start& start, std::vector<std::uint8_t> needed);
