@@ -1,8 +1,11 @@
 #include "relax/strips.hpp"
 #include "relax/tiled_start.hpp"
 
+#include "parallel.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <glm/geometric.hpp>
 
@@ -220,35 +223,26 @@ Strips relax_strips(const layout::Layout& layout, const std::vector<yarn_paths::
   Options strip_options = options;
   strip_options.by_repeat = false;
   strip_options.boundary = Boundary::free;
-  auto run_strip = [&](const Block& b, auto&& target) {
-    Strip s;
-    if (out.refused || !make_strip(f, b, period, start, s)) return;
-    if (deeper_than_laid(s.layout, s.runs, sizes, s.start, options.threads)) {
-      out.refused = true;
-      return;
-    }
-    Relaxed r = relax_chains(s.layout, s.runs, sizes, strip_options, &s.start);
-    std::vector<int> targets;
-    for (int c = 0; c < C; ++c)
-      for (int w = 0; w < W; ++w)
-        if (target(c, w)) targets.push_back(static_cast<int>(grid(c, w)));
-    out.points += copy_strip(f, b, period, s, r.pieces, targets, start);
-    ++out.relaxed;
-    out.iterations = std::max(out.iterations, r.stats.iterations);
-    out.end_overlap = std::max(out.end_overlap, r.stats.end_overlap);
+  // The strips, each a block and the loops it is copied onto. They lie apart (each band's
+  // middle, its ends held), so each is laid out, checked and relaxed on its own thread,
+  // then copied in order.
+  struct Job {
+    Block block;
+    std::function<bool(int, int)> target;
   };
+  std::vector<Job> jobs;
   // Across: a lattice-aligned period of wales near the middle, within the bands' run.
   if (W - R - L >= least_periods * P) {
     int w0 = repeat.wale0 + P * ((W / 2 - P / 2 - repeat.wale0) / P);
     w0 = std::clamp(w0, L, W - R - P);
-    auto middle = [&](int w) { return w >= L && w < W - R; };
-    if (B > 0) run_strip(Block{0, B + context, w0, w0 + P, true}, [&](int c, int w) { return c < B && middle(w); });
-    if (T > 0) run_strip(Block{C - T - context, C, w0, w0 + P, true}, [&](int c, int w) { return c >= C - T && middle(w); });
+    auto middle = [=](int w) { return w >= L && w < W - R; };
+    if (B > 0) jobs.push_back({Block{0, B + context, w0, w0 + P, true}, [=](int c, int w) { return c < B && middle(w); }});
+    if (T > 0) jobs.push_back({Block{C - T - context, C, w0, w0 + P, true}, [=](int c, int w) { return c >= C - T && middle(w); }});
   }
   // Up: a period of courses near the middle whose yarn turns inside the block (the
   // selvedge's runs go in and out of the held side), one parity or the other.
   if (C - T - B >= least_periods * Q + 1) {
-    auto middle = [&](int c) { return c >= B && c < C - T; };
+    auto middle = [=](int c) { return c >= B && c < C - T; };
     for (const bool left : {true, false}) {
       if ((left ? L : R) == 0) continue;
       const int w0 = left ? 0 : W - R - context, w1 = left ? L + context : W;
@@ -257,10 +251,39 @@ Strips relax_strips(const layout::Layout& layout, const std::vector<yarn_paths::
         Strip probe;
         const Block b{c, c + Q, w0, w1, false};
         if (!make_strip(f, b, period, start, probe)) continue;
-        run_strip(b, [&](int cc, int w) { return middle(cc) && (left ? w < L : w >= W - R); });
+        jobs.push_back({b, [=](int cc, int w) { return middle(cc) && (left ? w < L : w >= W - R); }});
         break;
       }
     }
+  }
+  struct Done {
+    Strip strip;
+    Relaxed relaxed;
+    bool made = false, refused = false;
+  };
+  std::vector<Done> done(jobs.size());
+  parallel_for(jobs.size(), thread_count(options.threads), [&](std::size_t k) {
+    Done& d = done[k];
+    if (!make_strip(f, jobs[k].block, period, start, d.strip)) return;
+    d.made = true;
+    d.refused = deeper_than_laid(d.strip.layout, d.strip.runs, sizes, d.strip.start, options.threads);
+    if (!d.refused) d.relaxed = relax_chains(d.strip.layout, d.strip.runs, sizes, strip_options, &d.strip.start);
+  });
+  for (std::size_t k = 0; k < jobs.size(); ++k) {
+    const Done& d = done[k];
+    if (d.refused) {
+      out.refused = true;
+      return out;
+    }
+    if (!d.made) continue;
+    std::vector<int> targets;
+    for (int c = 0; c < C; ++c)
+      for (int w = 0; w < W; ++w)
+        if (jobs[k].target(c, w)) targets.push_back(static_cast<int>(grid(c, w)));
+    out.points += copy_strip(f, jobs[k].block, period, d.strip, d.relaxed.pieces, targets, start);
+    ++out.relaxed;
+    out.iterations = std::max(out.iterations, d.relaxed.stats.iterations);
+    out.end_overlap = std::max(out.end_overlap, d.relaxed.stats.end_overlap);
   }
   return out;
 }
