@@ -17,7 +17,9 @@ std::vector<yarn_paths::Piece> refine(std::vector<yarn_paths::Piece> pieces, con
   for (yarn_paths::Piece& piece : pieces) {
     if (piece.data_points.size() < 2) continue;
     const double step = spacing * diameter[static_cast<std::size_t>(piece.yarn)];
-    const auto curve = nurbs::interpolate(piece.data_points);
+    nurbs::InterpolationOptions io;
+    io.threads = threads;
+    const auto curve = nurbs::interpolate(piece.data_points, io);
     // Where each old point goes: after the points inserted before it.
     const std::size_t n = piece.data_points.size();
     std::vector<std::size_t> new_index(n, 0);
