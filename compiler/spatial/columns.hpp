@@ -47,8 +47,10 @@ class Columns {
   void index() {
     dense_.clear();
     columns_.clear();
-    if (!index_densely()) {
-      std::sort(entries_.begin(), entries_.end(), before);
+    const bool ordered = in_insertion_order();
+    if (!ordered || !index_densely()) {
+      if (ordered) by_columns_then_z();
+      else std::sort(entries_.begin(), entries_.end(), before);
       columns_.reserve(entries_.size() / 4 + 1);
       for (std::size_t i = 0; i < entries_.size();) {
         std::size_t j = i;
@@ -107,15 +109,62 @@ class Columns {
     return hit == columns_.end() ? std::pair<std::size_t, std::size_t>{0, 0} : hit->second;
   }
 
-  // Where the columns are few for the entries (a fabric, not a scatter) and the entries
-  // came in the order the sort would leave equal places in (item, image), a counting sort
-  // by column, then by z within each, gives the same order without comparing them all, and
-  // a table of every column's run replaces the map. False (nothing done) otherwise.
+  // Whether the entries came in the order the sort would leave equal places in (item,
+  // image): then a stable sort by column, then by z, leaves them as the full sort does.
+  bool in_insertion_order() const {
+    for (std::size_t i = 1; i < entries_.size(); ++i)
+      if (same_place_before(entries_[i], entries_[i - 1])) return false;
+    return true;
+  }
+
+  // Entries in insertion order sorted as `before` sorts them, without comparing them all:
+  // a stable radix sort by column (its x and y from their least, 11 bits a pass), then by
+  // z within each column by insertion (a column holds a few). A garment's edges are
+  // indexed over the whole garment's columns, too many for the dense table.
+  void by_columns_then_z() {
+    const std::size_t n = entries_.size();
+    if (n < 2) return;
+    std::uint64_t xl = UINT64_MAX, xh = 0, yl = UINT64_MAX, yh = 0;
+    for (const Entry& e : entries_) {
+      const std::uint64_t x = e.column >> 32, y = e.column & 0xffffffffu;
+      xl = std::min(xl, x), xh = std::max(xh, x), yl = std::min(yl, y), yh = std::max(yh, y);
+    }
+    const std::uint64_t ny = yh - yl + 1;
+    auto rank = [&](const Entry& e) { return ((e.column >> 32) - xl) * ny + ((e.column & 0xffffffffu) - yl); };
+    const std::uint64_t top = (xh - xl) * ny + (yh - yl);
+    constexpr int bits = 11;
+    constexpr std::size_t buckets = std::size_t{1} << bits;
+    std::vector<Entry> other(n);
+    std::vector<std::size_t> count(buckets + 1);
+    for (int shift = 0; shift == 0 || (top >> shift) != 0; shift += bits) {
+      std::fill(count.begin(), count.end(), 0);
+      for (const Entry& e : entries_) ++count[((rank(e) >> shift) & (buckets - 1)) + 1];
+      for (std::size_t k = 1; k <= buckets; ++k) count[k] += count[k - 1];
+      for (const Entry& e : entries_) other[count[(rank(e) >> shift) & (buckets - 1)]++] = e;
+      entries_.swap(other);
+      if (shift + bits >= 64) break;
+    }
+    for (std::size_t i = 0; i < n;) {  // by z, stably
+      std::size_t j = i + 1;
+      while (j < n && entries_[j].column == entries_[i].column) ++j;
+      if (j - i > 32) {
+        std::stable_sort(entries_.begin() + static_cast<std::ptrdiff_t>(i), entries_.begin() + static_cast<std::ptrdiff_t>(j),
+                         [](const Entry& a, const Entry& b) { return a.z < b.z; });
+      } else {
+        for (std::size_t a = i + 1; a < j; ++a)
+          for (std::size_t b = a; b > i && entries_[b].z < entries_[b - 1].z; --b) std::swap(entries_[b], entries_[b - 1]);
+      }
+      i = j;
+    }
+  }
+
+  // Where the columns are few for the entries (a fabric, not a scatter; the entries in
+  // insertion order), a counting sort by column, then by z within each, gives the same
+  // order without comparing them all, and a table of every column's run replaces the map.
+  // False (nothing done) otherwise.
   bool index_densely() {
     const std::size_t n = entries_.size();
     if (n == 0) return false;
-    for (std::size_t i = 1; i < n; ++i)
-      if (same_place_before(entries_[i], entries_[i - 1])) return false;
     std::int64_t xl = INT64_MAX, xh = INT64_MIN, yl = INT64_MAX, yh = INT64_MIN;
     for (const Entry& e : entries_) {
       const auto x = static_cast<std::int64_t>(e.column >> 32), y = static_cast<std::int64_t>(e.column & 0xffffffffu);

@@ -1,0 +1,77 @@
+// The spatial index's order: whichever way it indexes (a dense table for a compact
+// fabric, a radix sort by column for entries spread over many columns, a full sort for
+// entries not added in order), the columns hold their entries in one order, by column,
+// then z, then item: the relaxation and the measures visit them in it, so it must not
+// depend on the path taken.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "spatial/columns.hpp"
+
+namespace knitc {
+namespace {
+
+struct Added {
+  glm::i64vec3 cell;
+  std::uint32_t item;
+};
+
+// Every column's entries, in the columns' order: (column, z, item) per entry.
+std::vector<std::tuple<std::uint64_t, std::int64_t, std::uint32_t>> order_of(const spatial::Columns& grid) {
+  std::vector<std::tuple<std::uint64_t, std::int64_t, std::uint32_t>> out;
+  grid.each_column([&](std::span<const spatial::Columns::Entry> list) {
+    for (const auto& e : list) out.emplace_back(e.column, e.z, e.item);
+  });
+  return out;
+}
+
+// The entries indexed as added (in item order) and added backwards (which only the full
+// sort takes): the same order, and the same visits round each cell.
+void expect_one_order(const std::vector<Added>& added) {
+  spatial::Columns forwards(1.0), backwards(1.0);
+  for (const Added& a : added) forwards.add(a.cell, a.item);
+  for (auto it = added.rbegin(); it != added.rend(); ++it) backwards.add(it->cell, it->item);
+  forwards.index();
+  backwards.index();
+  const auto order = order_of(forwards);
+  ASSERT_EQ(order.size(), added.size());
+  EXPECT_EQ(order, order_of(backwards));
+  for (std::size_t k = 1; k < order.size(); ++k) ASSERT_LE(order[k - 1], order[k]) << "entry " << k;
+  for (const Added& a : added) {
+    std::vector<std::uint32_t> f, b;
+    forwards.near(a.cell, [&](const spatial::Columns::Entry& e) { f.push_back(e.item); });
+    backwards.near(a.cell, [&](const spatial::Columns::Entry& e) { b.push_back(e.item); });
+    ASSERT_EQ(f, b);
+    ASSERT_FALSE(f.empty());
+  }
+}
+
+TEST(Columns, ACompactFabricsEntriesKeepOneOrder) {
+  std::mt19937 rng(21);
+  std::uniform_int_distribution<int> xy(0, 30), z(-3, 3);
+  std::vector<Added> added;
+  for (std::uint32_t i = 0; i < 2000; ++i) added.push_back({{xy(rng), xy(rng), z(rng)}, i});
+  expect_one_order(added);
+}
+
+TEST(Columns, EntriesSpreadOverManyColumnsKeepOneOrder) {
+  // A garment's edges indexed over its whole extent: far more columns than entries, so
+  // no dense table; some columns hold several entries at several heights, one more than
+  // 32 (sorted by z another way).
+  std::mt19937 rng(22);
+  std::uniform_int_distribution<int> far(-200000, 200000), z(-5, 5);
+  std::vector<Added> added;
+  std::uint32_t item = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const glm::i64vec3 cell(far(rng), far(rng), z(rng));
+    added.push_back({cell, item++});
+    if (k % 7 == 0) added.push_back({{cell.x, cell.y, z(rng)}, item++});
+  }
+  for (int k = 0; k < 50; ++k) added.push_back({{12, -7, z(rng)}, item++});
+  expect_one_order(added);
+}
+
+}  // namespace
+}  // namespace knitc
