@@ -169,6 +169,9 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // A tile is small: settled four times as far, it costs little and every loop follows it.
   tile_options.settled_motion = 0.25 * options.settled_motion;
   tile_options.max_iterations = 4 * options.max_iterations;
+  // A tile's few hundred points do not pay for waking the pool's threads several times a
+  // sweep: one thread relaxes it (the same result on any number).
+  tile_options.threads = 1;
   const Relaxed relaxed_tile = relax_chains(tile, tile_pieces, sizes, tile_options, &links);
   const glm::dvec2 rest_period(repeat.wales * layout.loop_width, repeat.courses * layout.course_spacing);
   if (relaxed_tile.stats.period.x <= 0.0 || relaxed_tile.stats.period.y <= 0.0) return std::nullopt;
