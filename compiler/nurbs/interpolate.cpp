@@ -93,7 +93,8 @@ std::vector<double> data_parameters(std::span<const Point> q, Parametrisation ki
 // for the last row (the rows' parameters ascend), walked on to u's.
 void put_basis_row(BandMatrix& m, const Curve& c, int last, int row, double u, int& span) {
   while (span < last && c.knots[static_cast<std::size_t>(span) + 1] <= u) ++span;
-  assert(span == find_span(c, u));
+  // find_span's span (the curve's control points are not made yet: it cannot be asked).
+  assert(c.knots[static_cast<std::size_t>(span)] <= u && (span == last || u < c.knots[static_cast<std::size_t>(span) + 1]));
   BasisTable N;
   basis_derivatives(c, span, u, 0, N);
   for (int j = 0; j <= c.degree; ++j) m.at(row, span - c.degree + j) = N[0][j];
