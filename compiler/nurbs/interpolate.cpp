@@ -156,10 +156,7 @@ Interpolant interpolate(std::span<const Point> q, const InterpolationOptions& op
     }
   }
   BandMatrix m(controls, lower, upper);
-  std::vector<Point> rhs;
-  rhs.reserve(static_cast<std::size_t>(controls));
-  if (with_ends) rhs.resize(static_cast<std::size_t>(controls));
-  else rhs.assign(q.begin(), q.end());
+  std::vector<Point> rhs = with_ends ? std::vector<Point>(static_cast<std::size_t>(controls)) : std::vector<Point>(q.begin(), q.end());
   parallel_for(static_cast<std::size_t>(blocks), thread_count(options.threads), [&](std::size_t b) {
     int span = block_span[b];
     const int from = first_row + static_cast<int>(b) * block, to = std::min(last_row, from + block - 1);

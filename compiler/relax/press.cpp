@@ -160,11 +160,10 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
   const std::size_t blocks = (n + block - 1) / block;
   parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
     for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
-      const std::size_t from_i = p.first[p.piece[i]], to_i = p.first[p.piece[i] + 1];
-      const glm::dvec3 before = smoothed(pressed.get(), i > from_i ? i - 1 : i), after = smoothed(pressed.get(), i + 1 < to_i ? i + 1 : i);
+      const std::size_t piece = p.piece[i], from = p.first[piece], to = p.first[piece + 1];
+      const glm::dvec3 before = smoothed(pressed.get(), i > from ? i - 1 : i), after = smoothed(pressed.get(), i + 1 < to ? i + 1 : i);
       const glm::dvec3 twice = 0.25 * before + 0.5 * smoothed(pressed.get(), i) + 0.25 * after;
-      const std::size_t piece = p.piece[i], from = p.first[piece];
-      const glm::dvec3 t = tangent(p, i, from, p.first[piece + 1]);
+      const glm::dvec3 t = tangent(p, i, from, to);
       const double amount = glm::length(twice);
       glm::dvec3 across = twice - glm::dot(twice, t) * t;
       const double l = glm::length(across);

@@ -70,6 +70,18 @@ bool clean_block(const layout::Layout& layout, const LoopGrid& g, const Interior
   return true;
 }
 
+// The interior between `below` and `above` courses more than the first and last two (and
+// the first and last two needle positions of its narrowest course); none if too small to
+// find a repeat in.
+std::optional<Interior> interior_of(const layout::Layout& layout, int below, int above) {
+  Interior in{2 + below, layout.courses - 3 - above, 2, layout.wales - 3};
+  if (in.course_to - in.course_from + 1 < 8) return std::nullopt;
+  for (int c = in.course_from; c <= in.course_to; ++c)
+    in.wale_to = std::min(in.wale_to, layout.needle[static_cast<std::size_t>(c)] - 3);
+  if (in.wale_to - in.wale_from + 1 < 4) return std::nullopt;
+  return in;
+}
+
 }  // namespace
 
 int periodic_run(const std::vector<glm::dvec3>& points, std::size_t from, std::size_t period, double width, double close) {
@@ -103,19 +115,16 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
     for (std::size_t k = 1; k < edges.size(); ++k)
       if (std::abs(edges[k] - edges[k - 1] - layout.loop_width) > 1e-9 * layout.loop_width) return std::nullopt;
   const LoopGrid g = grid_of(layout);
-  // The interior: all but the first and last two courses and needle positions (of its
-  // narrowest course), less up to
-  // `most_trimmed` more courses at either end where those do not repeat (a machine
-  // program's cast-on, its held and dropped loops, its bind-off's held rows), the fewest.
-  Interior in{2, layout.courses - 3, 2, layout.wales - 3};
+  // The interior, less up to `most_trimmed` more courses at either end where those do not
+  // repeat (a machine program's cast-on, its held and dropped loops, its bind-off's held
+  // rows), the fewest.
+  Interior in{};
   int p = 0, q = 0;
   for (int trimmed = 0; trimmed <= 2 * most_trimmed && (p == 0 || q == 0); ++trimmed)
     for (int below = std::max(0, trimmed - most_trimmed); below <= std::min(trimmed, most_trimmed) && (p == 0 || q == 0); ++below) {
-      in = Interior{2 + below, layout.courses - 3 - (trimmed - below), 2, layout.wales - 3};
-      if (in.course_to - in.course_from + 1 < 8) continue;
-      for (int c = in.course_from; c <= in.course_to; ++c)  // the narrowest course's needles
-        in.wale_to = std::min(in.wale_to, layout.needle[static_cast<std::size_t>(c)] - 3);
-      if (in.wale_to - in.wale_from + 1 < 4) continue;
+      const auto trimmed_in = interior_of(layout, below, trimmed - below);
+      if (!trimmed_in) continue;
+      in = *trimmed_in;
       p = smallest_period(layout, g, in, true);
       q = p == 0 ? 0 : smallest_period(layout, g, in, false);
     }
@@ -123,10 +132,9 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   // purl whose repeat breaks where its halves meet, a motif on a plain ground): the loops
   // that do not repeat are relaxed with the edges.
   if (p == 0 || q == 0) {
-    in = Interior{2, layout.courses - 3, 2, layout.wales - 3};
-    for (int c = in.course_from; c <= in.course_to; ++c)
-      in.wale_to = std::min(in.wale_to, layout.needle[static_cast<std::size_t>(c)] - 3);
-    if (in.wale_to - in.wale_from + 1 < 4 || in.course_to - in.course_from + 1 < 8) return std::nullopt;
+    const auto whole = interior_of(layout, 0, 0);
+    if (!whole) return std::nullopt;
+    in = *whole;
     p = smallest_period(layout, g, in, true, most_not_repeating);
     q = p == 0 ? 0 : smallest_period(layout, g, in, false, most_not_repeating);
   }

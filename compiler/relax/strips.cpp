@@ -229,6 +229,8 @@ Strips relax_strips(const layout::Layout& layout, const std::vector<yarn_paths::
   struct Job {
     Block block;
     std::function<bool(int, int)> target;
+    Strip strip;        // laid out already (an up strip's, chosen by laying it out), or not
+    bool made = false;
   };
   std::vector<Job> jobs;
   // Across: a lattice-aligned period of wales near the middle, within the bands' run.
@@ -236,8 +238,8 @@ Strips relax_strips(const layout::Layout& layout, const std::vector<yarn_paths::
     int w0 = repeat.wale0 + P * ((W / 2 - P / 2 - repeat.wale0) / P);
     w0 = std::clamp(w0, L, W - R - P);
     auto middle = [=](int w) { return w >= L && w < W - R; };
-    if (B > 0) jobs.push_back({Block{0, B + context, w0, w0 + P, true}, [=](int c, int w) { return c < B && middle(w); }});
-    if (T > 0) jobs.push_back({Block{C - T - context, C, w0, w0 + P, true}, [=](int c, int w) { return c >= C - T && middle(w); }});
+    if (B > 0) jobs.push_back({Block{0, B + context, w0, w0 + P, true}, [=](int c, int w) { return c < B && middle(w); }, {}, false});
+    if (T > 0) jobs.push_back({Block{C - T - context, C, w0, w0 + P, true}, [=](int c, int w) { return c >= C - T && middle(w); }, {}, false});
   }
   // Up: a period of courses near the middle whose yarn turns inside the block (the
   // selvedge's runs go in and out of the held side), one parity or the other.
@@ -251,36 +253,37 @@ Strips relax_strips(const layout::Layout& layout, const std::vector<yarn_paths::
         Strip probe;
         const Block b{c, c + Q, w0, w1, false};
         if (!make_strip(f, b, period, start, probe)) continue;
-        jobs.push_back({b, [=](int cc, int w) { return middle(cc) && (left ? w < L : w >= W - R); }});
+        jobs.push_back({b, [=](int cc, int w) { return middle(cc) && (left ? w < L : w >= W - R); }, std::move(probe), true});
         break;
       }
     }
   }
   struct Done {
-    Strip strip;
     Relaxed relaxed;
-    bool made = false, refused = false;
+    bool refused = false;
   };
   std::vector<Done> done(jobs.size());
   parallel_for(jobs.size(), thread_count(options.threads), [&](std::size_t k) {
+    Job& job = jobs[k];
+    if (!job.made) job.made = make_strip(f, job.block, period, start, job.strip);
+    if (!job.made) return;
     Done& d = done[k];
-    if (!make_strip(f, jobs[k].block, period, start, d.strip)) return;
-    d.made = true;
-    d.refused = deeper_than_laid(d.strip.layout, d.strip.runs, sizes, d.strip.start, options.threads);
-    if (!d.refused) d.relaxed = relax_chains(d.strip.layout, d.strip.runs, sizes, strip_options, &d.strip.start);
+    d.refused = deeper_than_laid(job.strip.layout, job.strip.runs, sizes, job.strip.start, options.threads);
+    if (!d.refused) d.relaxed = relax_chains(job.strip.layout, job.strip.runs, sizes, strip_options, &job.strip.start);
   });
   for (std::size_t k = 0; k < jobs.size(); ++k) {
+    const Job& job = jobs[k];
     const Done& d = done[k];
     if (d.refused) {
       out.refused = true;
       return out;
     }
-    if (!d.made) continue;
+    if (!job.made) continue;
     std::vector<int> targets;
     for (int c = 0; c < C; ++c)
       for (int w = 0; w < W; ++w)
-        if (jobs[k].target(c, w)) targets.push_back(static_cast<int>(grid(c, w)));
-    out.points += copy_strip(f, jobs[k].block, period, d.strip, d.relaxed.pieces, targets, start);
+        if (job.target(c, w)) targets.push_back(static_cast<int>(grid(c, w)));
+    out.points += copy_strip(f, job.block, period, job.strip, d.relaxed.pieces, targets, start);
     ++out.relaxed;
     out.iterations = std::max(out.iterations, d.relaxed.stats.iterations);
     out.end_overlap = std::max(out.end_overlap, d.relaxed.stats.end_overlap);

@@ -163,7 +163,7 @@ Moves tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vec
   // The loop the tile has in each loop's place, and whether it is laid out as that one.
   auto tile_place = [&](const layout::Loop& loop) {
     const int dc = loop.course - repeat.course0, dw = loop.wale - repeat.wale0;
-    return glm::ivec2(dw - floor_div(dw, repeat.wales) * repeat.wales, dc - floor_div(dc, repeat.courses) * repeat.courses);
+    return glm::ivec2(in_period(dw, repeat.wales), in_period(dc, repeat.courses));
   };
   // Each loop's place in the tile: its place on the lattice where it is laid out as the
   // tile's loop there, else the first place that it is (past a break in a mostly
@@ -195,7 +195,6 @@ Moves tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vec
     // their tile loops, and are the repeat's neighbours there: the tile's shape then fits
     // among them (a selvedge loop, or one beside a band of another stitch, is not; nor,
     // round a tube, one whose neighbour past the round's start is not the repeat's).
-    auto in_period = [](int a, int period) { return period > 0 ? a - floor_div(a, period) * period : a; };
     bool alike_round = true;
     for (int u = -2; alike_round && u <= 2; ++u)
       for (int v = -2; alike_round && v <= 2; ++v) {

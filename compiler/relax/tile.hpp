@@ -24,6 +24,8 @@ bool repeats(const layout::Layout& layout, long a, long b, int wales, int course
 
 // a / b rounded down (b > 0).
 inline int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+// a's place in a period of `period` (0 <= it < period); a itself where there is no period.
+inline int in_period(int a, int period) { return period > 0 ? a - floor_div(a, period) * period : a; }
 
 // The tile: the repeat's block of loops as a layout of its own, and each piece's runs of
 // them (consecutive loops of one course, with what lies between them) as its pieces, each

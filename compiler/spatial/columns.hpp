@@ -47,17 +47,24 @@ class Columns {
   void index() {
     dense_.clear();
     columns_.clear();
-    const bool ordered = in_insertion_order();
-    if (!ordered || !index_densely()) {
-      if (ordered) by_columns_then_z();
-      else std::sort(entries_.begin(), entries_.end(), before);
-      columns_.reserve(entries_.size() / 4 + 1);
-      for (std::size_t i = 0; i < entries_.size();) {
-        std::size_t j = i;
-        while (j < entries_.size() && entries_[j].column == entries_[i].column) ++j;
-        columns_.emplace(entries_[i].column, std::make_pair(i, j));
-        i = j;
-      }
+    if (entries_.empty()) return;
+    if (!in_insertion_order()) {
+      std::sort(entries_.begin(), entries_.end(), before);
+    } else {
+      // In insertion order, a stable sort by column, then by z within each, leaves them
+      // as the full sort does, without comparing them all.
+      const Extent e = extent();
+      const bool dense = index_densely(e);
+      if (!dense) by_columns(e);
+      by_z_within_columns();
+      if (dense) return;
+    }
+    columns_.reserve(entries_.size() / 4 + 1);
+    for (std::size_t i = 0; i < entries_.size();) {
+      std::size_t j = i;
+      while (j < entries_.size() && entries_[j].column == entries_[i].column) ++j;
+      columns_.emplace(entries_[i].column, std::make_pair(i, j));
+      i = j;
     }
   }
 
@@ -110,28 +117,34 @@ class Columns {
   }
 
   // Whether the entries came in the order the sort would leave equal places in (item,
-  // image): then a stable sort by column, then by z, leaves them as the full sort does.
+  // image).
   bool in_insertion_order() const {
     for (std::size_t i = 1; i < entries_.size(); ++i)
       if (same_place_before(entries_[i], entries_[i - 1])) return false;
     return true;
   }
 
-  // Entries in insertion order sorted as `before` sorts them, without comparing them all:
-  // a stable radix sort by column (its x and y from their least, 11 bits a pass), then by
-  // z within each column by insertion (a column holds a few). A garment's edges are
-  // indexed over the whole garment's columns, too many for the dense table.
-  void by_columns_then_z() {
-    const std::size_t n = entries_.size();
-    if (n < 2) return;
+  // The entries' columns' least and greatest x and y, as the keys hold them.
+  struct Extent {
     std::uint64_t xl = UINT64_MAX, xh = 0, yl = UINT64_MAX, yh = 0;
+  };
+  Extent extent() const {
+    Extent r;
     for (const Entry& e : entries_) {
       const std::uint64_t x = e.column >> 32, y = e.column & 0xffffffffu;
-      xl = std::min(xl, x), xh = std::max(xh, x), yl = std::min(yl, y), yh = std::max(yh, y);
+      r.xl = std::min(r.xl, x), r.xh = std::max(r.xh, x), r.yl = std::min(r.yl, y), r.yh = std::max(r.yh, y);
     }
-    const std::uint64_t ny = yh - yl + 1;
-    auto rank = [&](const Entry& e) { return ((e.column >> 32) - xl) * ny + ((e.column & 0xffffffffu) - yl); };
-    const std::uint64_t top = (xh - xl) * ny + (yh - yl);
+    return r;
+  }
+
+  // Entries sorted stably by column: a radix sort of the column's rank from the extent's
+  // corner (11 bits a pass). A garment's edges are indexed over the whole garment's
+  // columns, too many for the dense table.
+  void by_columns(const Extent& x) {
+    const std::size_t n = entries_.size();
+    const std::uint64_t ny = x.yh - x.yl + 1;
+    auto rank = [&](const Entry& e) { return ((e.column >> 32) - x.xl) * ny + ((e.column & 0xffffffffu) - x.yl); };
+    const std::uint64_t top = (x.xh - x.xl) * ny + (x.yh - x.yl);
     constexpr int bits = 11;
     constexpr std::size_t buckets = std::size_t{1} << bits;
     std::vector<Entry> other(n);
@@ -144,7 +157,13 @@ class Columns {
       entries_.swap(other);
       if (shift + bits >= 64) break;
     }
-    for (std::size_t i = 0; i < n;) {  // by z, stably
+  }
+
+  // Each column's entries (sorted by column) sorted stably by z: by insertion where a
+  // column holds a few, as a fabric's do.
+  void by_z_within_columns() {
+    const std::size_t n = entries_.size();
+    for (std::size_t i = 0; i < n;) {
       std::size_t j = i + 1;
       while (j < n && entries_[j].column == entries_[i].column) ++j;
       if (j - i > 32) {
@@ -158,21 +177,16 @@ class Columns {
     }
   }
 
-  // Where the columns are few for the entries (a fabric, not a scatter; the entries in
-  // insertion order), a counting sort by column, then by z within each, gives the same
-  // order without comparing them all, and a table of every column's run replaces the map.
-  // False (nothing done) otherwise.
-  bool index_densely() {
+  // Where the columns are few for the entries (a fabric, not a scatter), a counting sort
+  // by column, stable, and a table of every column's run that replaces the map. False
+  // (nothing done) otherwise.
+  bool index_densely(const Extent& x) {
     const std::size_t n = entries_.size();
-    if (n == 0) return false;
-    std::int64_t xl = INT64_MAX, xh = INT64_MIN, yl = INT64_MAX, yh = INT64_MIN;
-    for (const Entry& e : entries_) {
-      const auto x = static_cast<std::int64_t>(e.column >> 32), y = static_cast<std::int64_t>(e.column & 0xffffffffu);
-      xl = std::min(xl, x), xh = std::max(xh, x), yl = std::min(yl, y), yh = std::max(yh, y);
-    }
-    const auto cols = static_cast<double>(xh - xl + 1) * static_cast<double>(yh - yl + 1);
+    const auto xl = static_cast<std::int64_t>(x.xl), yl = static_cast<std::int64_t>(x.yl);
+    const auto cols = static_cast<double>(x.xh - x.xl + 1) * static_cast<double>(x.yh - x.yl + 1);
     if (cols > 4.0 * static_cast<double>(n) + 4096.0) return false;
-    x0_ = xl - (std::int64_t{1} << 31), y0_ = yl - (std::int64_t{1} << 31), nx_ = xh - xl + 1, ny_ = yh - yl + 1;
+    x0_ = xl - (std::int64_t{1} << 31), y0_ = yl - (std::int64_t{1} << 31);
+    nx_ = static_cast<std::int64_t>(x.xh - x.xl + 1), ny_ = static_cast<std::int64_t>(x.yh - x.yl + 1);
     auto slot = [&](const Entry& e) {
       return static_cast<std::size_t>((static_cast<std::int64_t>(e.column >> 32) - xl) * ny_ +
                                       (static_cast<std::int64_t>(e.column & 0xffffffffu) - yl));
@@ -183,9 +197,6 @@ class Columns {
     std::vector<Entry> sorted(n);
     std::vector<std::size_t> next(dense_.begin(), dense_.end() - 1);
     for (const Entry& e : entries_) sorted[next[slot(e)]++] = e;  // stable: each column in the order added
-    for (std::size_t k = 0; k + 1 < dense_.size(); ++k)  // by z, by insertion (stable; a column holds a few)
-      for (std::size_t i = dense_[k] + 1; i < dense_[k + 1]; ++i)
-        for (std::size_t j = i; j > dense_[k] && sorted[j].z < sorted[j - 1].z; --j) std::swap(sorted[j], sorted[j - 1]);
     entries_ = std::move(sorted);
     return true;
   }
