@@ -1,8 +1,6 @@
-// The pattern library (patterns/lib: ribs, cables, lace) and require: each library
-// function makes the same fabric as the rows written out by hand, flat and in the round;
-// bad arguments are errors at the caller's line; require finds modules in the -I
-// folders, the pattern's own lib/ and the library, in that order, runs each once, and
-// reaches nothing else.
+// The pattern library (patterns/lib: ribs, cables, lace): each library function makes
+// the same fabric as the rows written out by hand, flat and in the round; bad arguments
+// are errors at the caller's line. How require finds and runs modules: require_test.cpp.
 #include <algorithm>
 #include <filesystem>
 #include <string>
@@ -21,32 +19,12 @@ namespace {
 namespace fs = std::filesystem;
 using runtime::PatternError;
 
-// A script: line 1 declares the pattern, line 2 requires the library, line 3 casts on,
-// the body starts on line 4.
-std::string script(const std::string& knitting, int stitches, const std::string& body) {
-  return "pattern { name = \"m\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.0 } }, "
-         "knitting = \"" + knitting + "\" }\n"
-         "local ribs, cables, lace = require \"ribs\", require \"cables\", require \"lace\"\n"
-         "cast_on(" + std::to_string(stitches) + ")\n" + body;
-}
+using test::library_script;
+using test::run_with_library;
 
-Pattern run(const std::string& knitting, int stitches, const std::string& body) {
-  return runtime::run_pattern(script(knitting, stitches, body), "t.lua").pattern;
-}
-
-// The message a script fails with, or "" if it runs.
-std::string error_of(const std::string& source, const std::string& file = "t.lua",
-                     const runtime::RunOptions& options = {}) {
-  try {
-    runtime::run_pattern(source, file, options);
-  } catch (const PatternError& e) {
-    return e.what();
-  }
-  return "";
-}
-
+// The message the script fails with, or "" if it runs.
 std::string error_of(const std::string& knitting, int stitches, const std::string& body) {
-  return error_of(script(knitting, stitches, body));
+  return test::script_error(library_script(knitting, stitches, body));
 }
 
 // The library call and the rows written by hand make one fabric (Pattern's == ignores
@@ -55,8 +33,8 @@ std::string error_of(const std::string& knitting, int stitches, const std::strin
                                        const std::string& by_hand) {
   Pattern a, b;
   try {
-    a = run(knitting, stitches, library);
-    b = run(knitting, stitches, by_hand);
+    a = run_with_library(knitting, stitches, library);
+    b = run_with_library(knitting, stitches, by_hand);
   } catch (const PatternError& e) {
     return ::testing::AssertionFailure() << knitting << ", " << stitches << " sts: " << e.what();
   }
@@ -70,7 +48,7 @@ const std::vector<std::string> both = {"round", "flat"};
 
 // The names a module exports, sorted.
 std::string exports_of(const std::string& module) {
-  const std::string message = error_of(
+  const std::string message = test::script_error(
       "local names = {}\nfor name in pairs(require \"" + module + "\") do names[#names + 1] = name end\n"
       "table.sort(names)\nerror(table.concat(names, \" \"), 0)\n");
   return message.substr(message.find(": ") + 2);  // after "t.lua:4: "
@@ -78,7 +56,7 @@ std::string exports_of(const std::string& module) {
 
 // The functions a module declares (working.declare, which the reference prints), sorted.
 std::string declared_by(const std::string& module) {
-  const std::string message = error_of(
+  const std::string message = test::script_error(
       "require \"" + module + "\"\nlocal names = {}\n"
       "for _, f in ipairs(require \"working\".declared[\"" + module + "\"].functions) do\n"
       "  names[#names + 1] = f.call:match(\"^[%w_]+%.([%w_]+)\")\nend\n"
@@ -162,12 +140,12 @@ TEST(ModulesLibrary, EveryFunctionWorksAfterAWrongSideFirstRow) {
 }
 
 TEST(ModulesLibrary, RightSideIsTheRuntimesRule) {
-  const auto p = run("flat", 4, "knitspeak [[\nRow 1 (WS): Purl.\n]]\n"
+  const auto p = run_with_library("flat", 4, "knitspeak [[\nRow 1 (WS): Purl.\n]]\n"
                                 "assert(right_side() and not right_side(1) and right_side(2) and not right_side(3))\n"
                                 "row \"k\"\nassert(not right_side())\n");
   EXPECT_EQ(p.courses.size(), 2u);
-  EXPECT_TRUE(run("round", 4, "assert(right_side(1) and right_side(2)) row \"k\" assert(right_side())").courses.size() == 1);
-  EXPECT_TRUE(run("flat", 4, "assert(right_side() and not right_side(2)) row \"k\" assert(not right_side())").courses.size() == 1);
+  EXPECT_TRUE(run_with_library("round", 4, "assert(right_side(1) and right_side(2)) row \"k\" assert(right_side())").courses.size() == 1);
+  EXPECT_TRUE(run_with_library("flat", 4, "assert(right_side() and not right_side(2)) row \"k\" assert(not right_side())").courses.size() == 1);
 }
 
 // ---- ribs ----
@@ -309,7 +287,7 @@ TEST(ModulesLace, FeatherAndFan) {
                           "for i = 1, 2 do row \"k\" row \"k\" " + fan + " row \"p\" end"));
   EXPECT_TRUE(same_fabric("flat", 18, "lace.feather_and_fan(1) lace.feather_and_fan(3)", "lace.feather_and_fan(4)"));
   // Every row keeps the stitch count.
-  for (const auto& c : run("flat", 36, "lace.feather_and_fan(4)").courses) EXPECT_EQ(produced(c), 36);
+  for (const auto& c : run_with_library("flat", 36, "lace.feather_and_fan(4)").courses) EXPECT_EQ(produced(c), 36);
 }
 
 // ---- errors in library calls are at the caller's line ----
@@ -374,186 +352,6 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"round", 20, "lace.feather_and_fan(4)\n",
                 "t.lua:4: lace.feather_and_fan needs a multiple of 18 stitches; 20 are live"}),
     [](const ::testing::TestParamInfo<BadCall>& param) { return "call" + std::to_string(param.index); });
-
-// ---- require ----
-
-const char* header = "pattern { name = \"m\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.0 } } }\n";
-
-TEST(ModulesRequire, AMissingModuleSaysWhereItLooked) {
-  const std::string message = error_of(std::string(header) + "cast_on(4)\nlocal x = require \"nope\"\n");
-  EXPECT_EQ(message.rfind("t.lua:3: module \"nope\" not found", 0), 0u) << message;
-  EXPECT_NE(message.find((fs::path(KNITC_SOURCE_DIR) / "patterns" / "lib" / "nope.lua").string()), std::string::npos)
-      << message;
-}
-
-TEST(ModulesRequire, NamesThatLeaveTheLibraryAreRefused) {
-  for (const char* name : {"../secret", "a/b", "/etc/passwd", "a..b", ".hidden", "trailing.", "a\\\\b", ""}) {
-    const std::string message = error_of(std::string(header) + "require \"" + name + "\"\n");
-    EXPECT_EQ(message.rfind("t.lua:2: module name \"", 0), 0u) << name << " -> " << message;
-    EXPECT_NE(message.find("must be letters, digits, _ and -, with dots between folders"), std::string::npos) << message;
-  }
-  EXPECT_EQ(error_of(std::string(header) + "require(42)\n"),
-            "t.lua:2: require takes a module name, e.g. require \"cables\"");
-}
-
-// A scratch folder with some files in it.
-fs::path folder_with(const std::string& name, const std::vector<std::pair<std::string, std::string>>& files) {
-  const fs::path dir = test::scratch_dir(name);
-  for (const auto& [path, text] : files) {
-    fs::create_directories((dir / path).parent_path());
-    test::write_text(dir / path, text);
-  }
-  return dir;
-}
-
-TEST(ModulesRequire, AnIncludeFolderWinsOverTheLibrary) {
-  const fs::path first = folder_with("modules-first", {{"ribs.lua", "return { k2p2 = function(n) rows(n, \"k\") end, mine = 1 }\n"},
-                                                       {"sub/deeper.lua", "return { depth = 2 }\n"}});
-  const fs::path second = folder_with("modules-second", {{"ribs.lua", "return { mine = 2 }\n"},
-                                                         {"only_here.lua", "return { here = true }\n"}});
-  runtime::RunOptions options;
-  options.module_dirs = {first.string(), second.string()};
-  const std::string source = std::string(header) +
-                             "local ribs = require \"ribs\"\n"
-                             "assert(ribs.mine == 1, \"the first -I folder should win\")\n"
-                             "assert(require(\"sub.deeper\").depth == 2, \"dots are folders\")\n"
-                             "assert(require(\"only_here\").here, \"later folders are searched too\")\n"
-                             "assert(require(\"cables\").rope, \"the library is still there\")\n"
-                             "cast_on(12)\nribs.k2p2(3)\n";
-  const Pattern p = runtime::run_pattern(source, "t.lua", options).pattern;
-  EXPECT_EQ(p, run("round", 12, "rows(3, \"k\")"));
-  fs::remove_all(first);
-  fs::remove_all(second);
-}
-
-TEST(ModulesRequire, ThePatternsOwnLibFolderIsSearched) {
-  const fs::path dir = folder_with(
-      "modules-own-lib",
-      {{"lib/stripes.lua", "return { band = function(n) rows(n, \"p\") end }\n"},
-       {"lib/ribs.lua", "return { own = true }\n"},
-       {"lib/trims/edge.lua", "return { edge = function() row \"k1, p1\" end }\n"},
-       {"scarf.lua", std::string(header) +
-                         "local stripes = require \"stripes\"\n"
-                         "assert(require(\"ribs\").own, \"the pattern's lib/ wins over knitc's library\")\n"
-                         "cast_on(6)\nstripes.band(2)\nrequire(\"trims.edge\").edge()\n"}});
-  const Pattern p = runtime::run_pattern_file((dir / "scarf.lua").string()).pattern;
-  EXPECT_EQ(p, run("round", 6, "rows(2, \"p\") row \"k1, p1\""));
-  // -I folders come before the pattern's lib/.
-  const fs::path include = folder_with("modules-include", {{"stripes.lua", "return { band = function(n) rows(n, \"k\") end }\n"}});
-  runtime::RunOptions options;
-  options.module_dirs = {include.string()};
-  EXPECT_EQ(runtime::run_pattern_file((dir / "scarf.lua").string(), options).pattern,
-            run("round", 6, "rows(2, \"k\") row \"k1, p1\""));
-  // A script elsewhere does not see that lib/.
-  const fs::path elsewhere = test::scratch_dir("modules-elsewhere");
-  const std::string message = error_of(std::string(header) + "require \"stripes\"\n", (elsewhere / "other.lua").string());
-  EXPECT_NE(message.find("module \"stripes\" not found"), std::string::npos) << message;
-  fs::remove_all(elsewhere);
-  fs::remove_all(dir);
-  fs::remove_all(include);
-}
-
-TEST(ModulesRequire, AModuleRunsOnceAndRequireReturnsItsValue) {
-  const fs::path dir = folder_with("modules-once", {{"counted.lua", "counter = (counter or 0) + 1\nreturn { n = counter }\n"},
-                                                    {"silent.lua", "loaded_silent = true\n"}});
-  runtime::RunOptions options;
-  options.module_dirs = {dir.string()};
-  const std::string source = std::string(header) +
-                             "local a = require \"counted\"\nlocal b = require \"counted\"\n"
-                             "assert(a == b and a.n == 1, \"the same table both times\")\n"
-                             "assert(require \"silent\" == true and loaded_silent, \"a module returning nothing gives true\")\n"
-                             "cast_on(4)\nrows(counter, \"k\")\n";
-  EXPECT_EQ(runtime::run_pattern(source, "t.lua", options).pattern.courses.size(), 1u);
-  fs::remove_all(dir);
-}
-
-TEST(ModulesRequire, AModuleThatRequiresItselfIsAClearError) {
-  const fs::path dir = folder_with("modules-cycle", {{"selfish.lua", "local me = require \"selfish\"\nreturn {}\n"},
-                                                     {"ping.lua", "require \"pong\"\nreturn {}\n"},
-                                                     {"pong.lua", "require \"ping\"\nreturn {}\n"}});
-  runtime::RunOptions options;
-  options.module_dirs = {dir.string()};
-  for (const char* name : {"selfish", "ping"}) {
-    const std::string message = error_of(std::string(header) + "cast_on(4)\nrequire \"" + name + "\"\n", "t.lua", options);
-    EXPECT_NE(message.find("requires itself, directly or through others"), std::string::npos) << message;
-    EXPECT_NE(message.find(".lua:1: module \""), std::string::npos) << message;  // the module's own line
-    EXPECT_NE(message.find("(called from t.lua:3)"), std::string::npos) << message;
-  }
-  fs::remove_all(dir);
-}
-
-TEST(ModulesRequire, AModuleCannotReachFilesOrTheSystem) {
-  const fs::path dir = folder_with(
-      "modules-sandbox",
-      {{"peek.lua", "return { io = io, os = os, debug = debug, package = package, dofile = dofile, loadfile = loadfile }\n"},
-       {"sneaky.lua", "local f = io.open(\"/etc/passwd\")\nreturn {}\n"},
-       {"clock.lua", "return { now = function() return os.time() end }\n"}});
-  runtime::RunOptions options;
-  options.module_dirs = {dir.string()};
-  const std::string start = std::string(header) + "cast_on(4)\nrow \"k\"\n";
-  EXPECT_EQ(error_of(start + "for _, name in ipairs { \"io\", \"os\", \"debug\", \"package\", \"dofile\", \"loadfile\" } do\n"
-                             "  assert(require(\"peek\")[name] == nil, name)\nend\n",
-                     "t.lua", options),
-            "");
-  const std::string io = error_of(start + "require \"sneaky\"\n", "t.lua", options);
-  EXPECT_NE(io.find("sneaky.lua:1: attempt to index a nil value (global 'io')"), std::string::npos) << io;
-  const std::string os = error_of(start + "require(\"clock\").now()\n", "t.lua", options);
-  EXPECT_NE(os.find("clock.lua:1: attempt to index a nil value (global 'os')"), std::string::npos) << os;
-  fs::remove_all(dir);
-}
-
-TEST(ModulesRequire, AVerbFailingInAModuleNamesThePatternLineToo) {
-  const fs::path dir = folder_with("modules-verb", {{"bad.lua", "return { go = function()\n  row \"k3\"\nend }\n"}});
-  runtime::RunOptions options;
-  options.module_dirs = {dir.string()};
-  const std::string message =
-      error_of(std::string(header) + "local bad = require \"bad\"\ncast_on(4)\nbad.go()\n", "t.lua", options);
-  EXPECT_EQ(message.rfind((dir / "bad.lua").string() + ":2: ", 0), 0u) << message;
-  EXPECT_NE(message.find("(called from t.lua:4)"), std::string::npos) << message;
-  fs::remove_all(dir);
-}
-
-TEST(ModulesRequire, AModuleThatFailedToLoadFailsAgainWithItsOwnError) {
-  const fs::path dir = folder_with("modules-broken", {{"broken.lua", "error(\"broken on purpose\")\n"}});
-  runtime::RunOptions options;
-  options.module_dirs = {dir.string()};
-  const std::string message = error_of(
-      std::string(header) + "local ok = pcall(require, \"broken\")\nassert(not ok)\nrequire \"broken\"\n", "t.lua", options);
-  EXPECT_NE(message.find("broken.lua:1: broken on purpose"), std::string::npos) << message;
-  fs::remove_all(dir);
-}
-
-TEST(ModulesRequire, RowsWorkedByALibraryFunctionAreLocatedAtThePatternsLine) {
-  const fs::path dir = folder_with("modules-where", {{"knit.lua", "return { go = function()\n  row \"k\"\nend }\n"}});
-  runtime::RunOptions options;
-  options.module_dirs = {dir.string()};
-  const auto result = runtime::run_pattern(std::string(header) + "local m = require \"knit\"\ncast_on(4)\nm.go()\n", "t.lua", options);
-  ASSERT_EQ(result.pattern.courses.size(), 1u);
-  EXPECT_EQ(result.pattern.courses[0].where.file, "t.lua");
-  EXPECT_EQ(result.pattern.courses[0].where.line, 4);
-  fs::remove_all(dir);
-}
-
-TEST(ModulesRequire, TheFilesReadAreTheWatchersList) {
-  // knitc view watches these: the pattern and every module it required, also when a
-  // module failed (mending the module must rebuild).
-  const fs::path dir = folder_with("modules-files", {{"knit.lua", "return { go = function()\n  row \"k\"\nend }\n"},
-                                                      {"broken.lua", "error(\"broken on purpose\")\n"}});
-  runtime::RunOptions options;
-  options.module_dirs = {dir.string()};
-  const auto result = runtime::run_pattern(std::string(header) + "local m = require \"knit\"\ncast_on(4)\nm.go()\n", "t.lua", options);
-  ASSERT_EQ(result.files.size(), 2u);
-  EXPECT_EQ(result.files[0], "t.lua");
-  EXPECT_EQ(fs::path(result.files[1]).filename(), "knit.lua");
-  try {
-    runtime::run_pattern(std::string(header) + "require \"knit\"\nrequire \"broken\"\n", "t.lua", options);
-    FAIL() << "a broken module must fail the pattern";
-  } catch (const runtime::PatternError& e) {
-    ASSERT_EQ(e.files.size(), 3u);
-    EXPECT_EQ(fs::path(e.files[2]).filename(), "broken.lua");
-  }
-  fs::remove_all(dir);
-}
 
 // ---- the example patterns ----
 

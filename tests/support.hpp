@@ -40,6 +40,30 @@ inline void write_text(const std::filesystem::path& p, const std::string& text) 
   std::ofstream(p, std::ios::binary) << text;
 }
 
+// A script using the pattern library: line 1 declares the pattern, line 2 requires the
+// library (ribs, cables, lace), line 3 casts on, the body starts on line 4.
+inline std::string library_script(const std::string& knitting, int stitches, const std::string& body) {
+  return "pattern { name = \"m\", gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1.0 } }, "
+         "knitting = \"" + knitting + "\" }\n"
+         "local ribs, cables, lace = require \"ribs\", require \"cables\", require \"lace\"\n"
+         "cast_on(" + std::to_string(stitches) + ")\n" + body;
+}
+
+inline Pattern run_with_library(const std::string& knitting, int stitches, const std::string& body) {
+  return runtime::run_pattern(library_script(knitting, stitches, body), "t.lua").pattern;
+}
+
+// The message a pattern script fails with, or "" if it runs.
+inline std::string script_error(const std::string& source, const std::string& file = "t.lua",
+                                const runtime::RunOptions& options = {}) {
+  try {
+    runtime::run_pattern(source, file, options);
+  } catch (const runtime::PatternError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 // A fresh, empty directory for one test, under the build tree.
 inline std::filesystem::path scratch_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("knitc-test-" + name + "-" + std::to_string(::getpid()));
