@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <memory>
 
 #include <glm/geometric.hpp>
 
@@ -74,9 +73,10 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
   const std::size_t n = p.size();
   assert(same_as.empty() || same_as.size() == n);
   auto own = [&](std::size_t i) { return same_as.empty() || same_as[i] == i; };
-  // Each point's direction, set (zero where not pressed) by the block it is in: a
-  // garment's 43 MB are first written in parallel, not zeroed by one thread first.
-  std::unique_ptr<glm::dvec3[]> pressed(new glm::dvec3[n]);
+  // Each point's direction, found in the pieces' own arrays and smoothed there in place:
+  // a garment's second 43 MB array was most of this stage's fresh memory.
+  for (auto& piece : pieces) piece.pressed.assign(piece.data_points.size(), glm::dvec3(0.0));
+  auto pressed = [&](std::size_t i) -> glm::dvec3& { return pieces[p.piece[i]].pressed[i - p.first[p.piece[i]]]; };
   const double thickest = p.thickest, longest = p.longest;
   if (thickest > 0.0 && n > 1) {
     // Segments by their midpoints: a cell holds every segment a point's free surface can
@@ -94,7 +94,6 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     constexpr std::size_t block = 4096;
     parallel_for((n + block - 1) / block, thread_count(threads), [&](std::size_t b) {
       for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
-        pressed[i] = glm::dvec3(0.0);
         if (!own(i)) continue;
         const std::size_t from = p.first[p.piece[i]], to = p.first[p.piece[i] + 1];
         double deepest = 0.0;
@@ -127,47 +126,67 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
         if (l < 1e-6) continue;
         const double minor = std::max(p.free_r(i) - deepest, p.free_r(i) - p.shell(i));
         const double aspect = std::max(flattest_aspect, (minor / p.free_r(i)) * (minor / p.free_r(i)));
-        pressed[i] = (1.0 - aspect) * across / l;
+        pressed(i) = (1.0 - aspect) * across / l;
       }
     });
     for (std::size_t i = 0; i < n; ++i)
-      if (!own(i)) pressed[i] = pressed[same_as[i]];
-  } else {
-    std::fill(pressed.get(), pressed.get() + n, glm::dvec3(0.0));
+      if (!own(i)) pressed(i) = pressed(same_as[i]);
   }
   // An ellipse is the same turned half a turn: each piece's directions turned to agree
   // with the last pressed one before it, then smoothed along the piece (twice by 1/4,
   // 1/2, 1/4, the ends repeated) and made across the yarn again.
   for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
     glm::dvec3 last(0.0);
-    for (std::size_t i = p.first[piece]; i < p.first[piece + 1]; ++i) {
-      if (glm::dot(pressed[i], pressed[i]) == 0.0) continue;
-      if (glm::dot(pressed[i], last) < 0.0) pressed[i] = -pressed[i];
-      last = pressed[i];
+    auto& v = pieces[piece].pressed;
+    for (auto& d : v) {
+      if (glm::dot(d, d) == 0.0) continue;
+      if (glm::dot(d, last) < 0.0) d = -d;
+      last = d;
     }
-    pieces[piece].pressed.assign(p.first[piece + 1] - p.first[piece], glm::dvec3(0.0));
   }
-  // A pass reads its neighbours in the piece, the ends repeated.
-  auto smoothed = [&](const glm::dvec3* v, std::size_t i) {
-    const std::size_t from = p.first[p.piece[i]], to = p.first[p.piece[i] + 1];
-    const glm::dvec3& a = v[i > from ? i - 1 : i];
-    const glm::dvec3& b = v[i + 1 < to ? i + 1 : i];
-    return 0.25 * a + 0.5 * v[i] + 0.25 * b;
-  };
-  // The two passes in one: each point's second pass reads its neighbours' first, made
-  // where they are needed (the same sums, in the same order, as two arrays gave).
-  constexpr std::size_t block = 16384;
+  // The two passes in one, in place: each point's second pass reads its neighbours' first,
+  // made where they are needed (the same sums, in the same order, as two arrays gave),
+  // from the directions as they were before the pass. A block keeps the two it has
+  // overwritten last; the two either side of it, which its neighbours overwrite, are
+  // kept before the blocks start.
+  constexpr std::size_t block = 16384, halo = 2;
   const std::size_t blocks = (n + block - 1) / block;
+  std::vector<glm::dvec3> edges(blocks * 2 * halo);
+  for (std::size_t b = 0; b < blocks; ++b)
+    for (std::size_t h = 0; h < halo; ++h) {
+      const std::size_t lo = b * block, hi = std::min(n, lo + block);
+      if (lo >= halo - h) edges[(b * 2) * halo + h] = pressed(lo - (halo - h));
+      if (hi + h < n) edges[(b * 2 + 1) * halo + h] = pressed(hi + h);
+    }
   parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
-    for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
+    const std::size_t lo = b * block, hi = std::min(n, lo + block);
+    glm::dvec3 last[halo];  // the directions before the pass at i - 2 and i - 1
+    std::size_t i = lo;
+    auto before_pass = [&](std::size_t j) -> const glm::dvec3& {
+      if (j < lo) return edges[(b * 2) * halo + (j + halo - lo)];
+      if (j >= hi) return edges[(b * 2 + 1) * halo + (j - hi)];
+      if (j < i) return last[j + halo - i];
+      return pressed(j);
+    };
+    // A pass reads its neighbours in the piece, the ends repeated.
+    auto smoothed = [&](std::size_t k) {
+      const std::size_t from = p.first[p.piece[k]], to = p.first[p.piece[k] + 1];
+      const glm::dvec3& a = before_pass(k > from ? k - 1 : k);
+      const glm::dvec3& c = before_pass(k + 1 < to ? k + 1 : k);
+      return 0.25 * a + 0.5 * before_pass(k) + 0.25 * c;
+    };
+    for (; i < hi; ++i) {
       const std::size_t piece = p.piece[i], from = p.first[piece], to = p.first[piece + 1];
-      const glm::dvec3 before = smoothed(pressed.get(), i > from ? i - 1 : i), after = smoothed(pressed.get(), i + 1 < to ? i + 1 : i);
-      const glm::dvec3 twice = 0.25 * before + 0.5 * smoothed(pressed.get(), i) + 0.25 * after;
+      const glm::dvec3 before = smoothed(i > from ? i - 1 : i), after = smoothed(i + 1 < to ? i + 1 : i);
+      const glm::dvec3 twice = 0.25 * before + 0.5 * smoothed(i) + 0.25 * after;
       const glm::dvec3 t = tangent(p, i, from, to);
       const double amount = glm::length(twice);
       glm::dvec3 across = twice - glm::dot(twice, t) * t;
       const double l = glm::length(across);
-      if (amount > 1e-9 && l > 1e-9) pieces[piece].pressed[i - from] = amount * across / l;
+      glm::dvec3& out = pressed(i);
+      last[0] = last[1];
+      last[1] = out;
+      out = amount > 1e-9 && l > 1e-9 ? amount * across / l : glm::dvec3(0.0);
     }
   });
 }

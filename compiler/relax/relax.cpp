@@ -250,13 +250,13 @@ std::vector<std::vector<std::uint32_t>> same_as_by_piece(const std::vector<yarn_
   return out;
 }
 
-Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> pieces, const std::vector<yarn::Size>& sizes,
+Relaxed relax(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes,
               const Options& options) {
   auto relaxed = [&]() -> Relaxed {
     if (options.by_repeat && options.boundary == Boundary::free)
       if (const auto repeat = find_repeat(layout))
         if (auto out = relax_by_repeat(layout, pieces, sizes, options, *repeat)) return std::move(*out);
-    return relax_chains(layout, std::move(pieces), sizes, options, nullptr);
+    return relax_chains(layout, pieces, sizes, options, nullptr);  // a copy: a garment's repeat reads them only
   };
   Relaxed out = relaxed();
   press(out.pieces, sizes, thread_count(options.threads), out.same_as);

@@ -123,7 +123,7 @@ std::vector<yarn_paths::Piece> refine(std::vector<yarn_paths::Piece> pieces, con
 
 // Relaxes refined chains (see refine) laid out by `layout`; the result has the same points,
 // moved. sizes: per Pattern::yarns.
-Relaxed relax(const layout::Layout& layout, std::vector<yarn_paths::Piece> chains, const std::vector<yarn::Size>& sizes,
+Relaxed relax(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes,
               const Options& options);
 
 }  // namespace knitc::relax

@@ -194,8 +194,8 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   if (round) origin.x = 0.0;
   const LatticeStretch affine{origin, stretch};
 
-  const Moves moves = tile_moves(layout, g, flat, repeat, *cut, relaxed_tile, affine);
-  const std::vector<std::vector<glm::dvec3>>& local = moves.local;
+  Moves moves = tile_moves(layout, g, flat, repeat, *cut, relaxed_tile, affine);
+  std::vector<std::vector<glm::dvec3>>& local = moves.local;
   const std::vector<std::vector<std::uint8_t>>& tiled = moves.tiled;
   const std::vector<std::vector<std::uint32_t>>& tile_point = moves.tile_point;
   const std::vector<std::uint32_t>& tile_first = moves.tile_first;
@@ -247,7 +247,6 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   {
     std::size_t points = 0;
     for (const auto& piece : chains) points += piece.data_points.size();
-    start.pos.reserve(points);
     start.held.reserve(points);
     scan_from.reserve(points);
     scan_at.reserve(points);
@@ -285,17 +284,23 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
         last_on = static_cast<long>(k);
       }
     }
-    for (std::size_t k = 0; k < held.size(); ++k) {
+    start.held.insert(start.held.end(), held.begin(), held.end());
+    // Each point moved as the tile moved it, in place of its move (a garment's 43 MB of
+    // fresh memory fewer: docs/performance.md).
+    std::vector<glm::dvec3>& moved = local[i];
+    parallel_for(moved.size(), thread_count(options.threads), [&](std::size_t k) {
       const glm::dvec3& p = flat[i].data_points[k];
-      const glm::dvec3 moved = p + affine(p) + local[i][k];
-      if (!round) {
-        start.pos.push_back(moved);
-      } else {
+      moved[k] += p + affine(p);
+      if (round) {
         const double c = unrolled.circumference[i][k];
-        start.pos.push_back(c > 0.0 ? layout::roll(moved, c * stretch.x, layout.course_spacing * stretch.y) : piece.data_points[k]);
+        moved[k] = c > 0.0 ? layout::roll(moved[k], c * stretch.x, layout.course_spacing * stretch.y) : piece.data_points[k];
       }
-      start.held.push_back(held[k]);
-    }
+    });
+  }
+  if (local.size() == 1) start.pos = std::move(local.front());  // a garment is one piece
+  else {
+    start.pos.reserve(start.held.size());
+    for (const auto& moved : local) start.pos.insert(start.pos.end(), moved.begin(), moved.end());
   }
 
   // Rolled round a tube, the flat tile's inner side is pressed closer by the curvature:
@@ -332,12 +337,23 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   Relaxed edges = relax_chains(layout, std::move(part.pieces), sizes, edge_options, &part.start);
   Relaxed out;
   out.stats = edges.stats;
-  out.pieces = chains;
-  {
-    std::size_t at = 0;
-    for (auto& piece : out.pieces)
-      for (auto& p : piece.data_points) p = start.pos[at++];
+  // The pieces as laid, at the tiled start's places: the start's own array where the
+  // fabric is one piece (a garment's), not a copy of it.
+  const std::size_t points = start.pos.size();
+  out.pieces.resize(chains.size());
+  for (std::size_t i = 0, at = 0; i < chains.size(); ++i) {
+    const auto& laid = chains[i];
+    auto& piece = out.pieces[i];
+    piece.yarn = laid.yarn;
+    piece.loops = laid.loops;
+    piece.loop_first = laid.loop_first;
+    piece.loop_last = laid.loop_last;
+    piece.pressed = laid.pressed;
+    const auto from = start.pos.begin() + static_cast<std::ptrdiff_t>(at);
+    at += laid.data_points.size();
+    if (chains.size() > 1) piece.data_points.assign(from, start.pos.begin() + static_cast<std::ptrdiff_t>(at));
   }
+  if (chains.size() == 1) out.pieces.front().data_points = std::move(start.pos);
   for (std::size_t r = 0; r < edges.pieces.size(); ++r) {
     const auto [piece, at] = part.origin[r];
     std::copy(edges.pieces[r].data_points.begin(), edges.pieces[r].data_points.end(),
@@ -359,7 +375,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // turned, not moved: none stands for another.)
   if (!round) {
     std::vector<std::uint32_t> first_copy(tile_first.back(), no_tile_point);
-    out.same_as.resize(start.pos.size());
+    out.same_as.resize(points);
     std::size_t at = 0;
     for (std::size_t i = 0; i < chains.size(); ++i)
       for (std::size_t k = 0; k < chains[i].data_points.size(); ++k, ++at) {
@@ -380,7 +396,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
                                                      static_cast<double>(held_by_tile.size());
   out.stats.strips = strips.relaxed;
   out.stats.strip_iterations = strips.iterations;
-  out.stats.strip_share = start.pos.empty() ? 0.0 : static_cast<double>(strips.points) / static_cast<double>(start.pos.size());
+  out.stats.strip_share = points == 0 ? 0.0 : static_cast<double>(strips.points) / static_cast<double>(points);
   out.stats.end_overlap = std::max(out.stats.end_overlap, strips.end_overlap);
   out.stats.start_overlap = std::max(out.stats.start_overlap, relaxed_tile.stats.start_overlap);
   return out;
