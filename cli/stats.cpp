@@ -107,7 +107,7 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
       fmt::print(stderr, "crossings   {} kept, {} flipped; {} lost and {} new, of which {} and {} alone where the yarns touched "
                  "(a yarn passed through another), {} and {} by a yarn's end (a tail drawn back or out); {} at one height{}\n",
                  x.kept, x.flipped, x.lost, x.found, x.lost_alone_touching, x.found_alone_touching, x.lost_at_end, x.found_at_end, x.ties,
-                 x.copies_left_out ? "; counted where the yarn is not a copy of the tile's first (the copies cross as it does)" : "");
+                 x.copies_left_out ? "; counted where the yarn is not a copy of the tile's or an edge strip's first (the copies cross as it does)" : "");
     }
   } else {
     fmt::print(stderr, "relaxation  off\n");

@@ -216,6 +216,38 @@ TEST(Repeat, TheInteriorsCopiesArePressedAsIfEachWerePressed) {
   EXPECT_LE(worst, 1e-9);  // (1.9e-13 here: the copies lie on the tile to rounding)
 }
 
+// An edge's strip is copied along it: the copies away from the corners stand for each
+// other too (the cast-on's and the last course's loops across the middle, and the
+// selvedges' up the middle), each for a copy on its own band, a whole number of periods
+// before it, whose surroundings are its own moved.
+TEST(Repeat, AStripsCopiesStandForEachOther) {
+  const auto [layout, chains, out] = relaxed_jersey(30, 36, relax::Boundary::free);
+  ASSERT_GT(out.stats.strips, 0);
+  const auto& piece = out.pieces.front();
+  ASSERT_EQ(out.pieces.size(), 1u);
+  auto loop_at = [&](std::size_t k) {
+    for (std::size_t j = 0; j < piece.loops.size(); ++j)
+      if (piece.loop_first[j] <= k && k <= piece.loop_last[j]) return &layout.loops[static_cast<std::size_t>(piece.loops[j])];
+    return static_cast<const layout::Loop*>(nullptr);
+  };
+  std::size_t edge_copies = 0;
+  for (std::size_t k = 0; k < piece.data_points.size(); ++k) {
+    const layout::Loop* loop = loop_at(k);
+    if (!loop || out.same_as[k] == k) continue;
+    const bool cast_on = loop->course == 0, selvedge = loop->wale == 0;
+    if (!cast_on && !selvedge) continue;
+    ++edge_copies;
+    const layout::Loop* first = loop_at(out.same_as[k]);
+    ASSERT_NE(first, nullptr);
+    EXPECT_EQ(first->course == 0, cast_on) << "point " << k;
+    EXPECT_EQ(first->wale == 0, selvedge) << "point " << k;
+    const glm::dvec3 step = piece.data_points[k] - piece.data_points[out.same_as[k]];
+    EXPECT_NEAR(cast_on ? step.y : step.x, 0.0, 1e-9) << "point " << k;
+    EXPECT_NEAR(step.z, 0.0, 1e-9) << "point " << k;
+  }
+  EXPECT_GT(edge_copies, 200u);
+}
+
 // The crossings check of a fabric relaxed by repeat looks at the tile's first copies and
 // what is not a copy: it finds what the whole check finds there, and counts fewer.
 TEST(Repeat, TheCrossingsCheckOfTheCopiesIsTheirFirstCopysCheck) {

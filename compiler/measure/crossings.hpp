@@ -47,8 +47,8 @@ struct CrossingChanges {
   // lengths): an end sliding past another yarn unmakes or makes one crossing alone, with
   // nobody passing through anybody. Not counted in lost_alone or found_alone.
   std::size_t lost_at_end = 0, found_at_end = 0;
-  // Counted only where a segment is not a copy of the tile's (relaxation_changes's
-  // same_as): the copies cross as their first copy does.
+  // Counted only where a segment is not a copy of the tile's or an edge strip's
+  // (relaxation_changes's same_as): the copies cross as their first copy does.
   bool copies_left_out = false;
 };
 
@@ -73,10 +73,10 @@ CrossingChanges compare(const std::vector<Crossing>& before, const std::vector<C
 // 3 mm apart along their yarn); `thickest`, the thickest free diameter, mm: where the
 // yarns lay further apart in depth, a crossing lost or found alone slid away or in. A
 // lone change within 24 segments of a yarn's end is the end's (a tail drawn back).
-// `same_as`, empty or per point (relax::Relaxed::same_as): a point of the held interior
-// whose surroundings, laid and relaxed, are another's moved by whole tiles. Only crossings
-// at a segment with an end of its own are counted (the tile's copies cross as their first
-// copy does), matched against those within reach along the yarn.
+// `same_as`, empty or per point (relax::Relaxed::same_as): a point of the held interior,
+// or of an edge's strip, whose surroundings, laid and relaxed, are another's moved by
+// whole tiles. Only crossings at a segment with an end of its own are counted (the copies
+// cross as their first copy does), matched against those within reach along the yarn.
 CrossingChanges relaxation_changes(const std::vector<yarn_paths::Piece>& laid, const std::vector<yarn_paths::Piece>& relaxed,
                                    double thickest, int threads = 1, const std::vector<std::uint32_t>& same_as = {});
 

@@ -103,8 +103,9 @@ struct Relaxed {
   // Relaxed by repeat: per point (the pieces' points in order) the point whose
   // surroundings are this one's moved by a whole number of tiles (a point of the held
   // interior far from anything the edges' relaxation moved: one of its tile point's
-  // copies), or its own index; empty when relaxed whole. What depends only on a point's
-  // surroundings (pressing) is found once per tile point.
+  // copies; or an edge strip's copy far from the corners: one of its strip point's), or
+  // its own index; empty when relaxed whole. What depends only on a point's surroundings
+  // (pressing) is found once per tile or strip point.
   std::vector<std::uint32_t> same_as;
 };
 

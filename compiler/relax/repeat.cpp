@@ -324,12 +324,14 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   const double reach = 3.0 * thickest;
   std::vector<std::uint8_t> needed = near_free(start, reach, options.threads);
   const std::vector<std::uint8_t> held_by_tile = start.held;
-  const Strips strips = options.by_strips && !round
+  Strips strips = options.by_strips && !round
                             ? relax_strips(layout, chains, sizes, options, repeat, relaxed_tile.stats.period, g, loop_held, start)
                             : Strips{};
   if (strips.refused) return std::nullopt;
-  // The interior's copies (same_as, below) are judged before the strips were held.
-  Crop part = crop(chains, start, strips.points > 0 ? near_free(start, reach, options.threads) : needed);
+  // The interior's copies (same_as, below) are judged before the strips were held (one
+  // beside a strip is not among the tile's surroundings); the strips' after.
+  std::vector<std::uint8_t> needed_after = strips.points > 0 ? near_free(start, reach, options.threads) : needed;
+  Crop part = crop(chains, start, needed_after);
   part.needed = std::move(needed);
   if (deeper_than_laid(layout, part.pieces, sizes, part.start, options.threads)) return std::nullopt;
   Options edge_options = options;
@@ -371,17 +373,25 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   }
   // A held point that nothing free comes near (the crop's reach, three diameters: past
   // any contact's and pressing's) has its tile point's surroundings, as every other such
-  // copy of it has: the first copy stands for them all. (Round a tube the copies are
-  // turned, not moved: none stands for another.)
+  // copy of it has: the first copy stands for them all. So has a strip's copy of its
+  // relaxed point, every copy a whole number of periods along its edge, where nothing
+  // free (a corner) comes near. (Round a tube the copies are turned, not moved: none
+  // stands for another.)
   if (!round) {
-    std::vector<std::uint32_t> first_copy(tile_first.back(), no_tile_point);
+    const std::uint32_t tiles = tile_first.back();
+    std::vector<std::uint32_t> first_copy(tiles + strips.numbered, no_tile_point);
+    std::sort(strips.copies.begin(), strips.copies.end());
+    auto strip_copy = strips.copies.begin();
     out.same_as.resize(points);
     std::size_t at = 0;
     for (std::size_t i = 0; i < chains.size(); ++i)
       for (std::size_t k = 0; k < chains[i].data_points.size(); ++k, ++at) {
         out.same_as[at] = static_cast<std::uint32_t>(at);
-        const std::uint32_t t = tile_point[i][k];
-        if (t == no_tile_point || !held_by_tile[at] || part.needed[at] != 0) continue;
+        std::uint32_t t = no_tile_point;
+        if (tile_point[i][k] != no_tile_point && held_by_tile[at] && part.needed[at] == 0) t = tile_point[i][k];
+        while (strip_copy != strips.copies.end() && strip_copy->first < at) ++strip_copy;
+        if (strip_copy != strips.copies.end() && strip_copy->first == at && needed_after[at] == 0) t = tiles + strip_copy->second;
+        if (t == no_tile_point) continue;
         if (first_copy[t] == no_tile_point) first_copy[t] = static_cast<std::uint32_t>(at);
         out.same_as[at] = first_copy[t];
       }

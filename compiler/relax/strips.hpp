@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -52,6 +53,10 @@ struct Strips {
   double end_overlap = 0;  // the deepest core overlap one left, of the thickest core d
   std::size_t points = 0;  // the fabric's points they placed
   bool refused = false;    // a strip's tiled start lay too deep (deeper_than_laid): relax the fabric whole
+  // Per point placed, in no order: the fabric's point, and the relaxed strips' point it is
+  // a copy of (the strips' points numbered one after another, `numbered` in all).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> copies;
+  std::uint32_t numbered = 0;
 };
 
 // Relaxes the bands of `start` (the tiled start of relax_by_repeat: every point's place,
