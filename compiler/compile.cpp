@@ -159,14 +159,17 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   auto paths = yarn_paths::trace(fabric.layout, options.loop_model);
   const curves::Options curve = curve_options(options);
 
-  // The mesh's size from the data points, before any curve is fitted or relaxed.
-  double estimate = 0.0;
-  for (const auto& path : paths) {
-    const Yarn& yarn = pattern.yarns[path.yarn];
-    const auto samples = static_cast<std::size_t>(std::ceil(curves::estimate_samples(path, yarn, curve)));
-    estimate += static_cast<double>(tubes::vertex_count(yarn, samples, options.sides));
+  // The mesh's size from the data points, before any curve is fitted or relaxed (not for
+  // a fabric that may be tiled: its flat size is no reason to refuse it).
+  if (!may_tile(options, pattern, fabric.layout.knitting)) {
+    double estimate = 0.0;
+    for (const auto& path : paths) {
+      const Yarn& yarn = pattern.yarns[path.yarn];
+      const auto samples = static_cast<std::size_t>(std::ceil(curves::estimate_samples(path, yarn, curve)));
+      estimate += static_cast<double>(tubes::vertex_count(yarn, samples, options.sides));
+    }
+    if (estimate > static_cast<double>(max_vertices)) too_many_vertices(pattern, estimate, "about ");
   }
-  if (estimate > static_cast<double>(max_vertices) && !may_tile(options, pattern, fabric.layout.knitting)) too_many_vertices(pattern, estimate, "about ");
 
   // Relaxed by a repeat: per piece and point, the copy of the tile it repeats (relax::Relaxed).
   std::vector<std::vector<std::uint32_t>> same_as;
