@@ -11,6 +11,7 @@
 #include "fibres/bake.hpp"
 #include "fibres/fibres.hpp"
 #include "tiles/tiles.hpp"
+#include "relax/press.hpp"
 
 namespace knitc {
 
@@ -183,6 +184,8 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     }
     relax::Options ro = options.relaxation;
     ro.threads = options.threads;
+    const bool flat = fabric.layout.knitting == Knitting::flat;
+    ro.pressed = !flat;  // flat work is pressed beside its crossings check, below
     auto laid = relax::refine(std::move(paths), core, ro.spacing, options.threads);
     auto relaxed = relax::relax(fabric.layout, laid, sizes, ro);
     // The relaxation checked by its result: did any yarn come out on the other side of
@@ -190,16 +193,22 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
     // sweep between to keep its crossings; where that passed a yarn through another, the
     // fabric is relaxed again with its edges' bands whole (not as strips) and then whole,
     // and the one that passed fewer kept.
-    if (fabric.layout.knitting == Knitting::flat) {
+    if (flat) {
       double thickest = 0.0;
       for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
-      fabric.crossings = measure::relaxation_changes(laid, relaxed.pieces, thickest, options.threads, relaxed.same_as);
+      // Pressing writes the sections, the check reads the points: side by side, each on
+      // one thread (both are mostly serial passes over every point).
+      parallel_for(2, thread_count(options.threads), [&](std::size_t job) {
+        if (job == 0) relax::press(relaxed.pieces, sizes, 1, relaxed.same_as);
+        else fabric.crossings = measure::relaxation_changes(laid, relaxed.pieces, thickest, 1, relaxed.same_as);
+      });
       fabric.crossings_checked = true;
-      // Relaxed again another way, kept if it passed fewer yarns through another.
+      // Relaxed again another way, kept (and pressed) if it passed fewer yarns through another.
       auto retry = [&](relax::Options again, bool whole) {
         auto other = relax::relax(fabric.layout, laid, sizes, again);
         auto other_crossings = measure::relaxation_changes(laid, other.pieces, thickest, options.threads, other.same_as);
         if (measure::passed_through(other_crossings) >= measure::passed_through(fabric.crossings)) return;
+        relax::press(other.pieces, sizes, thread_count(options.threads), other.same_as);
         fabric.tiling_refused = whole;
         relaxed = std::move(other);
         fabric.crossings = other_crossings;

@@ -259,7 +259,7 @@ Relaxed relax(const layout::Layout& layout, const std::vector<yarn_paths::Piece>
     return relax_chains(layout, pieces, sizes, options, nullptr);  // a copy: a garment's repeat reads them only
   };
   Relaxed out = relaxed();
-  press(out.pieces, sizes, thread_count(options.threads), out.same_as);
+  if (options.pressed) press(out.pieces, sizes, thread_count(options.threads), out.same_as);
   return out;
 }
 

@@ -57,6 +57,9 @@ struct Options {
   // relaxed as one period of a strip periodic along its edge and copied along it, only the
   // corners relaxed against the copies (strips.hpp); off: the bands relaxed whole.
   bool by_strips = true;
+  // The sections pressed at the end (press.hpp); off, the caller presses them (the
+  // compiler, beside the crossings check, which reads only the points).
+  bool pressed = true;
 };
 
 // The constants of the method, in diameters or radii.
