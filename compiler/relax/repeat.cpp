@@ -180,7 +180,19 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // A tile's few hundred points do not pay for waking the pool's threads several times a
   // sweep: one thread relaxes it (the same result on any number).
   tile_options.threads = 1;
-  const Relaxed relaxed_tile = relax_chains(tile, tile_pieces, sizes, tile_options, &links);
+  // Beside the tile's relaxation (one thread), what the fabric needs made whatever the
+  // tile comes to: every point's moves, none yet, and its place along its yarn.
+  Relaxed relaxed_tile;
+  Moves moves;
+  AlongYarn places;
+  parallel_for(2, thread_count(options.threads), [&](std::size_t job) {
+    if (job == 0) {
+      relaxed_tile = relax_chains(tile, tile_pieces, sizes, tile_options, &links);
+    } else {
+      moves = unmoved(flat, layout.loops.size());
+      places = along_yarn(chains, sizes);
+    }
+  });
   const glm::dvec2 rest_period(repeat.wales * layout.loop_width, repeat.courses * layout.course_spacing);
   if (relaxed_tile.stats.period.x <= 0.0 || relaxed_tile.stats.period.y <= 0.0) return std::nullopt;
   // A tube has no crossings check after (measure::crossings projects flat work only): a
@@ -194,7 +206,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   if (round) origin.x = 0.0;
   const LatticeStretch affine{origin, stretch};
 
-  Moves moves = tile_moves(layout, g, flat, repeat, *cut, relaxed_tile, affine);
+  tile_moves(layout, g, flat, repeat, *cut, relaxed_tile, affine, moves);
   std::vector<std::vector<glm::dvec3>>& local = moves.local;
   const std::vector<std::vector<std::uint8_t>>& tiled = moves.tiled;
   const std::vector<std::vector<std::uint32_t>>& tile_point = moves.tile_point;
@@ -309,7 +321,8 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
     std::fill(scan_from.begin(), scan_from.end(), std::uint8_t{1});
     std::fill(scan_at.begin(), scan_at.end(), std::uint8_t{1});
   }
-  free_where_held_overlap(chains, sizes, start, scan_from, scan_at, options.threads);
+  free_where_held_overlap(places, start, scan_from, scan_at, options.threads);
+  places = {};
   // Tiling jumps the yarn to where the tile put it, with no sweep between to keep its
   // crossings: it must not leave the yarns deeper into each other than the layout did
   // (pushed back out, a deep overlap may come out on the wrong side). Where it would (the

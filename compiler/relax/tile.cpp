@@ -1,6 +1,7 @@
 // The tile cut from the fabric, and each point's move from its relaxation (tile.hpp).
 #include "relax/tile.hpp"
 
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 
@@ -138,28 +139,33 @@ std::optional<Tile> cut_tile(const layout::Layout& layout, const LoopGrid& g, co
   return out;
 }
 
-Moves tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vector<yarn_paths::Piece>& chains, const Repeat& repeat,
-                 const Tile& cut, const Relaxed& relaxed_tile, const LatticeStretch& affine) {
+Moves unmoved(const std::vector<yarn_paths::Piece>& chains, std::size_t loops) {
   Moves out;
+  out.local.resize(chains.size());
+  out.tiled.resize(chains.size());
+  out.tile_point.resize(chains.size());
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    out.local[i].assign(chains[i].data_points.size(), glm::dvec3(0.0));
+    out.tiled[i].assign(chains[i].data_points.size(), 0);
+    out.tile_point[i].assign(chains[i].data_points.size(), no_tile_point);
+  }
+  out.loop_tiled.assign(loops, 0);
+  return out;
+}
+
+void tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vector<yarn_paths::Piece>& chains, const Repeat& repeat,
+                const Tile& cut, const Relaxed& relaxed_tile, const LatticeStretch& affine, Moves& out) {
   auto& local = out.local;
   auto& tiled = out.tiled;
   auto& tile_point = out.tile_point;
   auto& tile_first = out.tile_first;
   auto& loop_tiled = out.loop_tiled;
+  assert(local.size() == chains.size() && loop_tiled.size() == layout.loops.size());
   const std::vector<yarn_paths::Piece>& tile_pieces = cut.pieces;
   const std::vector<long>& tile_loop = cut.tile_loop;
-  local.resize(chains.size());
-  tiled.resize(chains.size());
-  tile_point.resize(chains.size());
   tile_first.assign(tile_pieces.size() + 1, 0);
   for (std::size_t t = 0; t < tile_pieces.size(); ++t)
     tile_first[t + 1] = tile_first[t] + static_cast<std::uint32_t>(tile_pieces[t].data_points.size());
-  loop_tiled.assign(layout.loops.size(), 0);
-  for (std::size_t i = 0; i < chains.size(); ++i) {
-    local[i].assign(chains[i].data_points.size(), glm::dvec3(0.0));
-    tiled[i].assign(chains[i].data_points.size(), 0);
-    tile_point[i].assign(chains[i].data_points.size(), no_tile_point);
-  }
   // The loop the tile has in each loop's place, and whether it is laid out as that one.
   auto tile_place = [&](const layout::Loop& loop) {
     const int dc = loop.course - repeat.course0, dw = loop.wale - repeat.wale0;
@@ -271,8 +277,6 @@ Moves tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vec
       last = static_cast<long>(k);
     }
   }
-
-  return out;
 }
 
 }  // namespace knitc::relax

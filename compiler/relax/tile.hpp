@@ -65,7 +65,11 @@ struct Moves {
 };
 inline constexpr std::uint32_t no_tile_point = UINT32_MAX;
 
-Moves tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vector<yarn_paths::Piece>& chains, const Repeat& repeat,
-                 const Tile& cut, const Relaxed& relaxed_tile, const LatticeStretch& affine);
+// The arrays of Moves for `chains` and `loops` loops, every point unmoved and untiled:
+// made apart from tile_moves, so that they can be while the tile relaxes.
+Moves unmoved(const std::vector<yarn_paths::Piece>& chains, std::size_t loops);
+// Fills `out`, as unmoved(chains, layout.loops.size()) made it.
+void tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vector<yarn_paths::Piece>& chains, const Repeat& repeat,
+                const Tile& cut, const Relaxed& relaxed_tile, const LatticeStretch& affine, Moves& out);
 
 }  // namespace knitc::relax

@@ -13,24 +13,33 @@
 
 namespace knitc::relax {
 
-void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes, Start& start,
-                             const std::vector<std::uint8_t>& look_from, const std::vector<std::uint8_t>& look_at, int threads) {
-  std::vector<double> piece_core, along;  // per piece: core radius, mm; per point: mm along its piece
-  std::vector<std::uint32_t> piece;
-  along.reserve(start.pos.size());
-  piece.reserve(start.pos.size());
-  double thickest = 0.0;
+AlongYarn along_yarn(const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes) {
+  AlongYarn y;
+  std::size_t n = 0;
+  for (const auto& piece : chains) n += piece.data_points.size();
+  y.along.reserve(n);
+  y.piece.reserve(n);
   for (std::size_t i = 0; i < chains.size(); ++i) {
     const yarn::Size& size = sizes[static_cast<std::size_t>(chains[i].yarn)];
-    thickest = std::max(thickest, size.free_diameter);
-    piece_core.push_back(0.5 * size.core_diameter);
+    y.thickest = std::max(y.thickest, size.free_diameter);
+    y.piece_core.push_back(0.5 * size.core_diameter);
     double s = 0.0;
     for (std::size_t k = 0; k < chains[i].data_points.size(); ++k) {
       if (k > 0) s += glm::distance(chains[i].data_points[k - 1], chains[i].data_points[k]);
-      along.push_back(s);
-      piece.push_back(static_cast<std::uint32_t>(i));
+      y.along.push_back(s);
+      y.piece.push_back(static_cast<std::uint32_t>(i));
     }
   }
+  return y;
+}
+
+void free_where_held_overlap(const AlongYarn& yarn, Start& start, const std::vector<std::uint8_t>& look_from,
+                             const std::vector<std::uint8_t>& look_at, int threads) {
+  assert(yarn.along.size() == start.pos.size());
+  const std::vector<double>& along = yarn.along;
+  const std::vector<std::uint32_t>& piece = yarn.piece;
+  const std::vector<double>& piece_core = yarn.piece_core;
+  const double thickest = yarn.thickest;
   auto core = [&](std::size_t i) { return piece_core[piece[i]]; };
   if (thickest <= 0.0) return;
   spatial::Columns grid(thickest);

@@ -13,6 +13,16 @@
 
 namespace knitc::relax {
 
+// Every point of `chains` (in order): its place along its piece (mm) and its piece; per
+// piece its core radius; the thickest free diameter. What free_where_held_overlap needs
+// of the laid fabric alone, so that it can be listed while the tile relaxes.
+struct AlongYarn {
+  std::vector<double> along, piece_core;
+  std::vector<std::uint32_t> piece;
+  double thickest = 0.0;
+};
+AlongYarn along_yarn(const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes);
+
 // The tile's shape is trusted where a loop's neighbourhood is laid out as its tile
 // loop's; where two held stretches of yarn still pass into each other (a loop laid out as
 // its tile loop whose neighbours along the yarn are not), both are freed, a loop's length
@@ -20,7 +30,7 @@ namespace knitc::relax {
 // that be: the held points each a copy of its tile point, among copies, lie as the tile's
 // (relaxed apart) do. So the points looked from are `look_from`'s, and the points looked
 // at `look_at`'s (a wider band: the held points close to the first).
-void free_where_held_overlap(const std::vector<yarn_paths::Piece>& chains, const std::vector<yarn::Size>& sizes, Start& start,
+void free_where_held_overlap(const AlongYarn& yarn, Start& start,
                              const std::vector<std::uint8_t>& look_from, const std::vector<std::uint8_t>& look_at, int threads);
 
 // The edges' relaxation needs only what it can move and what it touches: the free points,
