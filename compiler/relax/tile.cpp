@@ -1,6 +1,7 @@
 // The tile cut from the fabric, and each point's move from its relaxation (tile.hpp).
 #include "relax/tile.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
@@ -277,6 +278,52 @@ void tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vect
       last = static_cast<long>(k);
     }
   }
+}
+
+HeldLoops held_loops(const layout::Layout& layout, const LoopGrid& g, const std::vector<std::uint8_t>& loop_tiled) {
+  HeldLoops out;
+  std::vector<std::uint8_t>& loop_held = out.held;
+  loop_held.assign(layout.loops.size(), 0);
+  for (std::size_t l = 0; l < layout.loops.size(); ++l) {
+    if (!loop_tiled[l]) continue;
+    bool inside = true;
+    const auto& loop = layout.loops[l];
+    for (int dc = -edge_band; inside && dc <= edge_band; ++dc)
+      for (int dw = -edge_band; inside && dw <= edge_band; ++dw) {
+        const long other = g(loop.course + dc, loop.wale + dw);
+        inside = other >= 0 && loop_tiled[static_cast<std::size_t>(other)];
+      }
+    loop_held[l] = inside ? 1 : 0;
+  }
+  // Per loop, how many loops (across or up, at most `far`) the nearest loop not held is
+  // (or a place with no loop): a distance transform, along the courses, then up.
+  constexpr int far = far_from_free;
+  std::vector<std::uint8_t>& to_free = out.to_free;
+  to_free.assign(layout.loops.size(), far);
+  {
+    const int C = g.courses, W = g.wales;
+    auto at = [&](int c, int w) { return static_cast<std::size_t>(c) * static_cast<std::size_t>(W) + static_cast<std::size_t>(w); };
+    std::vector<int> along(static_cast<std::size_t>(C) * static_cast<std::size_t>(W));
+    for (int c = 0; c < C; ++c) {
+      for (int w = 0; w < W; ++w) {
+        const long l = g(c, w);
+        along[at(c, w)] = l < 0 || !loop_held[static_cast<std::size_t>(l)] ? 0 : std::min(far, w > 0 ? along[at(c, w - 1)] + 1 : 1);
+      }
+      for (int w = W - 1; w >= 0; --w) along[at(c, w)] = std::min(along[at(c, w)], w + 1 < W ? along[at(c, w + 1)] + 1 : 1);
+    }
+    for (int c = 0; c < C; ++c)
+      for (int w = 0; w < W; ++w) {
+        const long l = g(c, w);
+        if (l < 0) continue;
+        int d = far;
+        for (int dc = -far; dc <= far; ++dc) {
+          const int cc = c + dc;
+          d = std::min(d, cc < 0 || cc >= C ? std::abs(dc) : std::max(std::abs(dc), along[at(cc, w)]));
+        }
+        to_free[static_cast<std::size_t>(l)] = static_cast<std::uint8_t>(d);
+      }
+  }
+  return out;
 }
 
 }  // namespace knitc::relax

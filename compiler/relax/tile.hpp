@@ -72,4 +72,13 @@ Moves unmoved(const std::vector<yarn_paths::Piece>& chains, std::size_t loops);
 void tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vector<yarn_paths::Piece>& chains, const Repeat& repeat,
                 const Tile& cut, const Relaxed& relaxed_tile, const LatticeStretch& affine, Moves& out);
 
+// Per loop of the layout: whether the tiled start holds it (tiled, with nothing untiled
+// within edge_band loops either way), and how many loops, across or up, the nearest loop
+// not held (or a place with no loop) is, at most far_from_free.
+inline constexpr int far_from_free = edge_band + 3;
+struct HeldLoops {
+  std::vector<std::uint8_t> held, to_free;
+};
+HeldLoops held_loops(const layout::Layout& layout, const LoopGrid& g, const std::vector<std::uint8_t>& loop_tiled);
+
 }  // namespace knitc::relax
