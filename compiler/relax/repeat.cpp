@@ -303,8 +303,8 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   std::vector<std::uint8_t> needed = near_free(start, reach, options.threads);
   const std::vector<std::uint8_t> held_by_tile = start.held;
   Strips strips = options.by_strips && !round
-                            ? relax_strips(layout, chains, sizes, options, repeat, relaxed_tile.stats.period, g, loop_held, start)
-                            : Strips{};
+                      ? relax_strips(layout, chains, sizes, options, repeat, relaxed_tile.stats.period, g, loop_held, start)
+                      : Strips{};
   if (strips.refused) return std::nullopt;
   // The interior's copies (same_as, below) are judged before the strips were held (one
   // beside a strip is not among the tile's surroundings); the strips' after.
