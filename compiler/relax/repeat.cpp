@@ -308,7 +308,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   if (strips.refused) return std::nullopt;
   // The interior's copies (same_as, below) are judged before the strips were held (one
   // beside a strip is not among the tile's surroundings); the strips' after.
-  std::vector<std::uint8_t> needed_after = strips.points > 0 ? near_free(start, reach, options.threads) : needed;
+  std::vector<std::uint8_t> needed_after = !strips.copies.empty() ? near_free(start, reach, options.threads) : needed;
   Crop part = crop(chains, start, needed_after);
   part.needed = std::move(needed);
   if (deeper_than_laid(layout, part.pieces, sizes, part.start, options.threads)) return std::nullopt;
@@ -384,7 +384,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
                                                      static_cast<double>(held_by_tile.size());
   out.stats.strips = strips.relaxed;
   out.stats.strip_iterations = strips.iterations;
-  out.stats.strip_share = points == 0 ? 0.0 : static_cast<double>(strips.points) / static_cast<double>(points);
+  out.stats.strip_share = points == 0 ? 0.0 : static_cast<double>(strips.copies.size()) / static_cast<double>(points);
   out.stats.end_overlap = std::max(out.stats.end_overlap, strips.end_overlap);
   out.stats.start_overlap = std::max(out.stats.start_overlap, relaxed_tile.stats.start_overlap);
   return out;

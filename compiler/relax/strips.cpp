@@ -137,10 +137,9 @@ bool make_strip(const Fabric& f, const Block& b, glm::dvec2 period, const Start&
 
 // The relaxed strip's places copied to every target loop (band loops laid out as the
 // block's loop a whole number of periods along), and held; each point placed listed in
-// `out.copies` with its relaxed point's number, its run's first `numbered` on. Returns the
-// points placed.
-std::size_t copy_strip(const Fabric& f, const Block& b, glm::dvec2 period, const Strip& s, const std::vector<yarn_paths::Piece>& relaxed,
-                       const std::vector<int>& targets, Start& start, Strips& out) {
+// `out.copies` with its relaxed point's number, its run's first `numbered` on.
+void copy_strip(const Fabric& f, const Block& b, glm::dvec2 period, const Strip& s, const std::vector<yarn_paths::Piece>& relaxed,
+                const std::vector<int>& targets, Start& start, Strips& out) {
   std::vector<std::uint32_t> run_number(relaxed.size());
   for (std::size_t r = 0; r < relaxed.size(); ++r) {
     run_number[r] = out.numbered;
@@ -148,7 +147,6 @@ std::size_t copy_strip(const Fabric& f, const Block& b, glm::dvec2 period, const
   }
   const auto& layout = f.layout;
   const int P = b.w1 - b.w0, Q = b.c1 - b.c0;
-  std::size_t placed = 0;
   std::vector<std::uint8_t> is_target(layout.loops.size(), 0);
   for (const int target : targets) is_target[static_cast<std::size_t>(target)] = 1;
   for (const int target : targets) {
@@ -185,10 +183,8 @@ std::size_t copy_strip(const Fabric& f, const Block& b, glm::dvec2 period, const
       start.pos[g + k] = relaxed[r].data_points[tf + k] + shift;
       start.held[g + k] = 1;
       out.copies.emplace_back(static_cast<std::uint32_t>(g + k), run_number[r] + static_cast<std::uint32_t>(tf + k));
-      ++placed;
     }
   }
-  return placed;
 }
 
 }  // namespace
@@ -291,7 +287,7 @@ Strips relax_strips(const layout::Layout& layout, const std::vector<yarn_paths::
     for (int c = 0; c < C; ++c)
       for (int w = 0; w < W; ++w)
         if (job.target(c, w)) targets.push_back(static_cast<int>(grid(c, w)));
-    out.points += copy_strip(f, job.block, period, job.strip, d.relaxed.pieces, targets, start, out);
+    copy_strip(f, job.block, period, job.strip, d.relaxed.pieces, targets, start, out);
     ++out.relaxed;
     out.iterations = std::max(out.iterations, d.relaxed.stats.iterations);
     out.end_overlap = std::max(out.end_overlap, d.relaxed.stats.end_overlap);

@@ -51,10 +51,9 @@ struct Strips {
   int relaxed = 0;         // strips relaxed and copied (0 to 4)
   int iterations = 0;      // the most sweeps one took
   double end_overlap = 0;  // the deepest core overlap one left, of the thickest core d
-  std::size_t points = 0;  // the fabric's points they placed
   bool refused = false;    // a strip's tiled start lay too deep (deeper_than_laid): relax the fabric whole
-  // Per point placed, in no order: the fabric's point, and the relaxed strips' point it is
-  // a copy of (the strips' points numbered one after another, `numbered` in all).
+  // Per point of the fabric they placed, in no order: the point, and the relaxed strips'
+  // point it is a copy of (the strips' points numbered one after another, `numbered` in all).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> copies;
   std::uint32_t numbered = 0;
 };
