@@ -195,6 +195,37 @@ TEST(KnitoutImport, HandDerivedLoopCountsOfSmallRealPrograms) {
   EXPECT_EQ(cross.back_loops, 5 + 5 + 5);
 }
 
+// CMU's full-needle, Milano and half-Milano ribs (tests/knitout/SOURCES.md): each knit
+// makes one loop on its bed, and none of the three tucks, splits or transfers.
+TEST(KnitoutImport, HandDerivedLoopCountsOfDoubleBedRibs) {
+  const fs::path ours = fs::path(KNITC_SOURCE_DIR) / "tests" / "knitout";
+  // Every one: an alternate-needle cast-on on the front (half the needles, then the
+  // rest), three rows of jersey, then the rib at racking +0.25.
+  // Full rib: 80 front needles, 79 back; 120 rows on both beds.
+  const Imported full = import_file(ours / "cmu-fullrib.knitout");
+  EXPECT_EQ(full.front_loops, 40 + 40 + 3 * 80 + 120 * 80);
+  EXPECT_EQ(full.back_loops, 120 * 79);
+  // Milano rib: 80 needles a bed; 40 times a row on both beds, a pass on the front alone
+  // and one on the back alone (each bed knits twice in three passes).
+  const Imported milano = import_file(ours / "cmu-MilanoRib.knitout");
+  EXPECT_EQ(milano.front_loops, 40 + 40 + 3 * 80 + 60 * 2 * 80);
+  EXPECT_EQ(milano.back_loops, 60 * 2 * 80);
+  // Half-Milano: 70 needles a bed; 90 times a row on both beds, then a pass on the back.
+  const Imported half = import_file(ours / "cmu-halfmilano.knitout");
+  EXPECT_EQ(half.front_loops, 35 + 35 + 3 * 70 + 90 * 70);
+  EXPECT_EQ(half.back_loops, 90 * 2 * 70);
+  // Drawn as one layer (docs/knitout.md), each read exactly: the front bed's loops are
+  // knits, the back's purls, and the back bed's first loops, knitted on empty needles,
+  // yarn overs (one a back needle); the cast-on is the front's first two passes.
+  const std::pair<const Imported*, int> ribs[] = {{&full, 79}, {&milano, 80}, {&half, 70}};
+  for (const auto& [in, back_needles] : ribs) {
+    for (const std::string& w : in->warnings) EXPECT_EQ(w.find("approximately"), std::string::npos) << w;
+    auto n = tally(in->pattern);
+    EXPECT_EQ(n["yo"], back_needles);
+    EXPECT_EQ(n["k"] + n["p"] + n["yo"] + in->pattern.cast_on, in->front_loops + in->back_loops);
+  }
+}
+
 TEST(KnitoutImport, RealProgramsSayTheirStructures) {
   KNITC_NEED_SHARED(real("cmu-garter.knitout"));
   // Garter by transfers: every row is all knit or all purl, turn about.
@@ -288,7 +319,7 @@ TEST(KnitoutImport, EveryRealProgramReadsIntoAPatternTheKnitGraphTakes) {
         EXPECT_TRUE(read_exactly);
       }
     }
-  EXPECT_EQ(programs, 27 + 5);
-  // Read exactly (no course approximated, no drop drawn bound off): 20 of the 27 and the 5 found.
-  EXPECT_GE(exact, 25);
+  EXPECT_EQ(programs, 27 + 8);
+  // Read exactly (no course approximated, no drop drawn bound off): 20 of the 27 and the 8 found.
+  EXPECT_GE(exact, 28);
 }
