@@ -99,6 +99,9 @@ void print_stats(const knitc::Pattern& pattern, const knitc::Fabric& fabric, dou
     else if (r.repeat_wales > 0)
       fmt::print(stderr, "by repeat   a tile of {} x {} loops relaxed in {} sweeps, tiled; {:.0f}% of the yarn held, the rest relaxed in {} sweeps\n",
                  r.repeat_wales, r.repeat_courses, r.repeat_iterations, 100.0 * r.held_share, r.iterations);
+    if (r.repeat_wales > 0 && r.morph_sweeps > 0)
+      fmt::print(stderr, "by repeat   the edges' relaxation carried the yarn to the tile's places over {} sweeps (jumped there, it "
+                 "would lie deeper into itself than laid)\n", r.morph_sweeps);
     if (fabric.tiling_refused)
       fmt::print(stderr, "by repeat   refused: tiled, a yarn passed through another; relaxed whole instead\n");
     print_sections(fabric);

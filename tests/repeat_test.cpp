@@ -3,6 +3,7 @@
 // shape the tile's; the interior's copies pressed and checked as their first copy.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <regex>
 
@@ -25,6 +26,7 @@ using test::at_paper_gauge;
 using test::centrelines;
 using test::relaxed_jersey;
 using test::yarn_sizes;
+namespace fs = std::filesystem;
 
 // Round a tube the grid runs on past a round's start: the loop left of needle 0 is the
 // next course's last, the one right of a course's last the course before's needle 0;
@@ -246,6 +248,28 @@ TEST(Repeat, AStripsCopiesStandForEachOther) {
     EXPECT_NEAR(step.z, 0.0, 1e-9) << "point " << k;
   }
   EXPECT_GT(edge_copies, 200u);
+}
+
+// The library's 1x1 rib: its tile draws in so far that jumping the yarn to the tile's
+// places leaves it deeper into itself than the layout did, so the edges' relaxation
+// carries it there over sweeps instead (relax::Start::from). It is tiled, no yarn passes
+// through another, the cores clear, and it is as narrow as Spencer's 1x1 rib: about 30%
+// narrower than plain fabric of the same loop length, fully relaxed at w = 0.24 l
+// (../shared/research/real-fabric-data.md). Relaxed whole it came out 12% narrower.
+TEST(Repeat, ARibTooDeepToJumpIsCarriedToItsTileOverSweeps) {
+  const fs::path file = fs::path(KNITC_SOURCE_DIR) / "patterns" / "rib_1x1.lua";
+  const Pattern rib = runtime::run_pattern(test::read_text(file), file.string()).pattern;
+  const Fabric f = compile(rib, centrelines(true));
+  ASSERT_GT(f.relaxation.repeat_wales, 0) << "relaxed whole";
+  EXPECT_EQ(f.relaxation.morph_sweeps, relax::morph_sweeps);
+  ASSERT_TRUE(f.crossings_checked);
+  EXPECT_EQ(measure::passed_through(f.crossings), 0u);
+  EXPECT_FALSE(f.tiling_refused);
+  EXPECT_LE(measure::measure(rib, f.layout, f.pieces).deepest_core_penetration, 0.05);
+  const auto shape = measure::loop_shape(f.layout, f.pieces);
+  const double plain = 0.24 * shape.loop_length;
+  EXPECT_GT(shape.wale_pitch / plain, 0.6);
+  EXPECT_LT(shape.wale_pitch / plain, 0.8);
 }
 
 // The crossings check of a fabric relaxed by repeat looks at the tile's first copies and

@@ -55,6 +55,13 @@ struct Start {
   // A block of a fabric periodic along an edge (a strip, relax/strips.hpp): its contacts
   // wrap this far in x or y (mm; 0: not that way), and its held points keep the period.
   glm::dvec2 period{0.0};
+  // Empty, or where every point starts (a tiled start's places before the tile's own
+  // moves): the held points are then carried from there to `pos` over `morph_sweeps`
+  // sweeps, a step a sweep, and the free ones pushed along by the contacts, which keep
+  // each crossing's side, rather than jumped there at once (relax_by_repeat, where the
+  // jump would leave the yarns too deep into each other).
+  std::vector<glm::dvec3> from;
+  int morph_sweeps = 0;
 };
 
 // The sweeps on the chains of `pieces` (see relax.hpp), from the layout or from `start`.

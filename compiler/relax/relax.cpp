@@ -277,9 +277,12 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
       if (image.across != 0)
         c.along_period[c.piece[image.point]] = (c.along[image.source] - c.along[image.point]) / -image.across;
   const bool held_interior = start && !start->held.empty();
+  const bool morph = held_interior && !start->from.empty();
+  const int carried = morph ? std::max(1, start->morph_sweeps) : 0;  // sweeps
   if (held_interior) {
     assert(start->pos.size() == c.pos.size() && start->held.size() == c.pos.size());
-    c.pos = start->pos;
+    assert(!morph || start->from.size() == c.pos.size());
+    c.pos = morph ? start->from : start->pos;
     for (std::size_t i = 0; i < c.pos.size(); ++i)
       if (start->held[i]) c.inv_mass[i] = 0.0;
   }
@@ -311,6 +314,11 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
   std::vector<glm::dvec3> before;
   int iteration = 0;
   for (; iteration < options.max_iterations; ++iteration) {
+    if (iteration < carried) {  // the held points a step on toward the start's places, the last step exact
+      const double t = static_cast<double>(iteration + 1) / static_cast<double>(carried);
+      for (std::size_t i = 0; i < c.pos.size(); ++i)
+        if (start->held[i]) c.pos[i] = iteration + 1 == carried ? start->pos[i] : start->from[i] + t * (start->pos[i] - start->from[i]);
+    }
     if (contacts.stale(c)) contacts.find(c);
     before = c.pos;
     // The contacts' distance ramps up from the layout's closest approach to the yarns'
@@ -335,7 +343,8 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
     // Done when this sweep's pushes were small (a few tolerances), the loops moved by a
     // small step on average, it left no cores overlapping (the list holds every pair
     // that could, until it is stale) and the yarns have their lengths back.
-    if (met <= settled_pushes * tolerance && iteration > 0 && scale == 1.0 && mean_move(c, before) <= options.settled_motion * d) {
+    if (met <= settled_pushes * tolerance && iteration > 0 && iteration + 1 >= carried && scale == 1.0 &&
+        mean_move(c, before) <= options.settled_motion * d) {
       if (contacts.stale(c)) contacts.find(c);
       // (Held edges keep the swatch's size, so its yarn cannot get its length back.)
       if (contacts.deepest(c) <= tolerance && (!size.free_height || length_change(c) <= settled_length)) {

@@ -98,6 +98,9 @@ struct Stats {
   // edges, the corners, took `iterations`).
   int strips = 0, strip_iterations = 0;
   double strip_share = 0.0;
+  // The sweeps over which the edges' relaxation carried the yarn to the tile's places
+  // (Start::from), where jumping there would have left it too deep (0: jumped).
+  int morph_sweeps = 0;
 };
 
 struct Relaxed {

@@ -305,13 +305,26 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   Strips strips = options.by_strips && !round
                       ? relax_strips(layout, chains, sizes, options, repeat, relaxed_tile.stats.period, g, loop_held, start)
                       : Strips{};
-  if (strips.refused) return std::nullopt;
   // The interior's copies (same_as, below) are judged before the strips were held (one
   // beside a strip is not among the tile's surroundings); the strips' after.
   std::vector<std::uint8_t> needed_after = !strips.copies.empty() ? near_free(start, reach, options.threads) : needed;
   Crop part = crop(chains, start, needed_after);
   part.needed = std::move(needed);
-  if (deeper_than_laid(layout, part.pieces, sizes, part.start, options.threads)) return std::nullopt;
+  if (deeper_than_laid(layout, part.pieces, sizes, part.start, options.threads)) {
+    // A tube has no crossings check after (measure::crossings projects flat work only):
+    // relaxed whole. Flat work is carried to the tile's places over sweeps instead, from
+    // the fabric as laid, stretched as the tile was; the compile checks its crossings.
+    if (round) return std::nullopt;
+    part.start.from.reserve(part.start.pos.size());
+    for (std::size_t r = 0; r < part.pieces.size(); ++r) {
+      const auto [piece, first] = part.origin[r];
+      for (std::size_t k = 0; k < part.pieces[r].data_points.size(); ++k) {
+        const glm::dvec3& p = chains[piece].data_points[first + k];
+        part.start.from.push_back(p + affine(p));
+      }
+    }
+    part.start.morph_sweeps = morph_sweeps;
+  }
   Options edge_options = options;
   edge_options.by_repeat = false;
   Relaxed edges = relax_chains(layout, std::move(part.pieces), sizes, edge_options, &part.start);
@@ -383,6 +396,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
                                                : static_cast<double>(std::count(held_by_tile.begin(), held_by_tile.end(), std::uint8_t{1})) /
                                                      static_cast<double>(held_by_tile.size());
   out.stats.strips = strips.relaxed;
+  out.stats.morph_sweeps = part.start.morph_sweeps;
   out.stats.strip_iterations = strips.iterations;
   out.stats.strip_share = points == 0 ? 0.0 : static_cast<double>(strips.copies.size()) / static_cast<double>(points);
   out.stats.end_overlap = std::max(out.stats.end_overlap, strips.end_overlap);

@@ -278,11 +278,8 @@ Strips relax_strips(const layout::Layout& layout, const std::vector<yarn_paths::
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     const Job& job = jobs[k];
     const Done& d = done[k];
-    if (d.refused) {
-      out.refused = true;
-      return out;
-    }
-    if (!job.made) continue;
+    if (d.refused) ++out.refused;
+    if (!job.made || d.refused) continue;
     std::vector<int> targets;
     for (int c = 0; c < C; ++c)
       for (int w = 0; w < W; ++w)
