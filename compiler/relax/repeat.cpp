@@ -312,9 +312,14 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   part.needed = std::move(needed);
   if (deeper_than_laid(layout, part.pieces, sizes, part.start, options.threads)) {
     // A tube has no crossings check after (measure::crossings projects flat work only):
-    // relaxed whole. Flat work is carried to the tile's places over sweeps instead, from
-    // the fabric as laid, stretched as the tile was; the compile checks its crossings.
-    if (round) return std::nullopt;
+    // relaxed whole. So is flat work whose edges are half of it or more: carried there,
+    // its edges would cost about what the whole does, and where the carried yarn passes
+    // through another (the compile's crossings check) it is relaxed whole after all.
+    // Else it is carried to the tile's places over sweeps, from the fabric as laid,
+    // stretched as the tile was.
+    std::size_t edge_points = 0;
+    for (const auto& piece : part.pieces) edge_points += piece.data_points.size();
+    if (round || 2 * edge_points > start.pos.size()) return std::nullopt;
     part.start.from.reserve(part.start.pos.size());
     for (std::size_t r = 0; r < part.pieces.size(); ++r) {
       const auto [piece, first] = part.origin[r];
