@@ -277,12 +277,11 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
       if (image.across != 0)
         c.along_period[c.piece[image.point]] = (c.along[image.source] - c.along[image.point]) / -image.across;
   const bool held_interior = start && !start->held.empty();
-  const bool morph = held_interior && !start->from.empty();
-  const int carried = morph ? std::max(1, start->morph_sweeps) : 0;  // sweeps
+  const int carried = held_interior && !start->from.empty() ? std::max(1, start->morph_sweeps) : 0;  // sweeps
   if (held_interior) {
     assert(start->pos.size() == c.pos.size() && start->held.size() == c.pos.size());
-    assert(!morph || start->from.size() == c.pos.size());
-    c.pos = morph ? start->from : start->pos;
+    assert(carried == 0 || start->from.size() == c.pos.size());
+    c.pos = carried > 0 ? start->from : start->pos;
     for (std::size_t i = 0; i < c.pos.size(); ++i)
       if (start->held[i]) c.inv_mass[i] = 0.0;
   }

@@ -205,6 +205,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   glm::dvec3 origin = tile.loops.front().data_points[0];
   if (round) origin.x = 0.0;
   const LatticeStretch affine{origin, stretch};
+  auto stretched = [&](const glm::dvec3& p) { return p + affine(p); };  // a laid point, the fabric stretched as the tile was
 
   tile_moves(layout, g, flat, repeat, *cut, relaxed_tile, affine, moves);
   std::vector<std::vector<glm::dvec3>>& local = moves.local;
@@ -267,7 +268,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
     std::vector<glm::dvec3>& moved = local[i];
     parallel_for(moved.size(), thread_count(options.threads), [&](std::size_t k) {
       const glm::dvec3& p = flat[i].data_points[k];
-      moved[k] += p + affine(p);
+      moved[k] += stretched(p);
       if (round) {
         const double c = unrolled.circumference[i][k];
         moved[k] = c > 0.0 ? layout::roll(moved[k], c * stretch.x, layout.course_spacing * stretch.y) : piece.data_points[k];
@@ -317,15 +318,12 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
     // through another (the compile's crossings check) it is relaxed whole after all.
     // Else it is carried to the tile's places over sweeps, from the fabric as laid,
     // stretched as the tile was.
-    std::size_t edge_points = 0;
-    for (const auto& piece : part.pieces) edge_points += piece.data_points.size();
-    if (round || 2 * edge_points > start.pos.size()) return std::nullopt;
+    if (round || 2 * part.start.pos.size() > start.pos.size()) return std::nullopt;
     part.start.from.reserve(part.start.pos.size());
     for (std::size_t r = 0; r < part.pieces.size(); ++r) {
       const auto [piece, first] = part.origin[r];
       for (std::size_t k = 0; k < part.pieces[r].data_points.size(); ++k) {
-        const glm::dvec3& p = chains[piece].data_points[first + k];
-        part.start.from.push_back(p + affine(p));
+        part.start.from.push_back(stretched(chains[piece].data_points[first + k]));
       }
     }
     part.start.morph_sweeps = morph_sweeps;
@@ -401,11 +399,11 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
                                                : static_cast<double>(std::count(held_by_tile.begin(), held_by_tile.end(), std::uint8_t{1})) /
                                                      static_cast<double>(held_by_tile.size());
   out.stats.strips = strips.relaxed;
-  out.stats.morph_sweeps = part.start.morph_sweeps;
   out.stats.strip_iterations = strips.iterations;
   out.stats.strip_share = points == 0 ? 0.0 : static_cast<double>(strips.copies.size()) / static_cast<double>(points);
   out.stats.end_overlap = std::max(out.stats.end_overlap, strips.end_overlap);
   out.stats.start_overlap = std::max(out.stats.start_overlap, relaxed_tile.stats.start_overlap);
+  out.stats.morph_sweeps = part.start.morph_sweeps;
   return out;
 }
 

@@ -278,8 +278,7 @@ Strips relax_strips(const layout::Layout& layout, const std::vector<yarn_paths::
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     const Job& job = jobs[k];
     const Done& d = done[k];
-    if (d.refused) ++out.refused;
-    if (!job.made || d.refused) continue;
+    if (!job.made || d.refused) continue;  // a band whose strip started too deep is left to the edges' relaxation
     std::vector<int> targets;
     for (int c = 0; c < C; ++c)
       for (int w = 0; w < W; ++w)

@@ -51,7 +51,6 @@ struct Strips {
   int relaxed = 0;         // strips relaxed and copied (0 to 4)
   int iterations = 0;      // the most sweeps one took
   double end_overlap = 0;  // the deepest core overlap one left, of the thickest core d
-  int refused = 0;  // strips whose tiled start lay too deep (deeper_than_laid): their bands left to the edges' relaxation
   // Per point of the fabric they placed, in no order: the point, and the relaxed strips'
   // point it is a copy of (the strips' points numbered one after another, `numbered` in all).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> copies;
