@@ -99,6 +99,27 @@ TEST(Relax, SameForAnyThreadCount) {
   EXPECT_EQ(a.relaxation.iterations, b.relaxation.iterations);
 }
 
+// A yarn long enough to be worked in spans (relax.cpp, each_piece: its lengths and bending
+// span by span, the even spans then the odd) gives the same points on one thread as on
+// three. A few sweeps of a whole 40 x 44 jersey, one yarn of over 65,536 chain points.
+TEST(Relax, ALongYarnWorkedInSpansIsTheSameForAnyThreadCount) {
+  const std::string source =
+      "pattern { gauge = { loop_width = 4, loop_height = 4.2, thickness = 2 }, yarns = { A = { diameter = 1 } }, "
+      "knitting = \"flat\" }\ncast_on(40)\nrows(44, \"k\")\n";
+  const Pattern pattern = runtime::run_pattern(source, "jersey.lua").pattern;
+  CompileOptions one = centrelines(true), two = centrelines(true);
+  for (CompileOptions* o : {&one, &two}) {
+    o->relaxation.by_repeat = false;
+    o->relaxation.max_iterations = 3;
+  }
+  one.threads = 1;
+  two.threads = 3;
+  const Fabric a = compile(pattern, one), b = compile(pattern, two);
+  ASSERT_EQ(a.pieces.size(), 1u);
+  ASSERT_GE(a.pieces[0].path.data_points.size(), 4u * 16384u) << "too short to be worked in spans";
+  EXPECT_EQ(a.pieces[0].path.data_points, b.pieces[0].path.data_points);
+}
+
 TEST(Relax, HeldEdgesStayPut) {
   const auto [layout, chains, out] = relaxed_jersey(8, 6, relax::Boundary::held);
   std::size_t held = 0, moved = 0;

@@ -20,26 +20,55 @@ namespace {
 
 // The yarn's own terms, each a sweep along the chains.
 
+// A piece of at least 4 spans of this many points is worked span by span (each_piece).
+constexpr std::size_t span_points = 16384;
+
 // Calls work(from, to) for each piece's points [from, to); the pieces touch no point of
 // another's, so they go in parallel (blocks of pieces about equal in points), unless a
-// strain is summed, whose sum must keep one order.
+// strain is summed, whose sum must keep one order. A piece of 4 spans or more (a large
+// fabric knitted from one yarn, a machine program's) is cut into spans that run on
+// `overlap` points into the next (1: every segment, for the lengths; 2: every middle of
+// three points, for bending): the even spans go in parallel with the short pieces, then
+// the odd ones, so no two at once touch a point. The spans depend on the piece alone: the
+// result is the same for any thread count.
 template <class Work>
-void each_piece(const Chains& c, int threads, const Strain* strain, Work&& work) {
+void each_piece(const Chains& c, int threads, const Strain* strain, std::size_t overlap, Work&& work) {
   const std::size_t pieces = c.first.size() - 1;
-  if (strain || threads <= 1 || pieces < 2) {
+  if (strain) {
     for (std::size_t piece = 0; piece < pieces; ++piece) work(c.first[piece], c.first[piece + 1]);
     return;
   }
-  const std::size_t blocks = std::min<std::size_t>(pieces, 4 * static_cast<std::size_t>(threads));
-  std::vector<std::size_t> block_first(blocks + 1, pieces);  // the first piece of each block
-  const std::size_t points = c.first.back();
-  for (std::size_t b = 0, piece = 0; b < blocks; ++b) {
-    while (piece < pieces && c.first[piece] < points * b / blocks) ++piece;
-    block_first[b] = piece;
+  struct Span {
+    std::size_t from, to;
+  };
+  std::vector<Span> even, odd;  // the long pieces' spans
+  std::vector<std::size_t> short_pieces;
+  for (std::size_t piece = 0; piece < pieces; ++piece) {
+    const std::size_t from = c.first[piece], to = c.first[piece + 1], points = to - from;
+    const std::size_t spans = points / span_points;
+    if (spans < 4) {
+      short_pieces.push_back(piece);
+      continue;
+    }
+    for (std::size_t k = 0; k < spans; ++k)
+      (k % 2 == 0 ? even : odd).push_back({from + points * k / spans, std::min(to, from + points * (k + 1) / spans + overlap)});
   }
-  parallel_for(blocks, threads, [&](std::size_t b) {
-    for (std::size_t piece = block_first[b]; piece < block_first[b + 1]; ++piece) work(c.first[piece], c.first[piece + 1]);
+  // The short pieces in blocks about equal in points, then the even spans: one phase.
+  const std::size_t wanted = std::min<std::size_t>(short_pieces.size(), 4 * static_cast<std::size_t>(std::max(threads, 1)));
+  std::vector<std::size_t> block_first(wanted + 1, short_pieces.size());  // into short_pieces
+  if (wanted > 0) {
+    std::size_t total = 0;
+    for (std::size_t piece : short_pieces) total += c.first[piece + 1] - c.first[piece];
+    for (std::size_t b = 0, k = 0, seen = 0; b < wanted; ++b) {
+      while (k < short_pieces.size() && seen < total * b / wanted) seen += c.first[short_pieces[k] + 1] - c.first[short_pieces[k]], ++k;
+      block_first[b] = k;
+    }
+  }
+  parallel_for(wanted + even.size(), threads, [&](std::size_t u) {
+    if (u >= wanted) return work(even[u - wanted].from, even[u - wanted].to);
+    for (std::size_t k = block_first[u]; k < block_first[u + 1]; ++k) work(c.first[short_pieces[k]], c.first[short_pieces[k] + 1]);
   });
+  parallel_for(odd.size(), threads, [&](std::size_t u) { work(odd[u].from, odd[u].to); });
 }
 
 // Every segment back to its length: a sweep up each chain, then one down, so a
@@ -62,7 +91,7 @@ void keep_lengths(Chains& c, int threads, Strain* strain = nullptr) {
     for (std::size_t i = c.pos.size(); i-- > 1;) keep(i - 1);
     return;
   }
-  each_piece(c, threads, strain, [&](std::size_t from, std::size_t to) {
+  each_piece(c, threads, strain, 1, [&](std::size_t from, std::size_t to) {
     for (std::size_t i = from; i + 1 < to; ++i) keep(i);
     for (std::size_t i = to; i-- > from + 1;) keep(i - 1);
   });
@@ -74,7 +103,7 @@ void keep_lengths(Chains& c, int threads, Strain* strain = nullptr) {
 // the gradient of the squared second differences, the discrete rod's bending energy.
 // Held lengths and contacts stop it; what is left opens the loops.
 void bend(Chains& c, double stiffness, int threads, Strain* strain = nullptr) {
-  each_piece(c, threads, strain, [&](std::size_t from, std::size_t to) {
+  each_piece(c, threads, strain, 2, [&](std::size_t from, std::size_t to) {
     for (std::size_t i = from + 1; i + 1 < to; ++i) {
       const glm::dvec3 second = c.pos[i - 1] + c.pos[i + 1] - 2.0 * c.pos[i];
       const double wi = c.inv_mass[i], wa = c.inv_mass[i - 1], wb = c.inv_mass[i + 1];
@@ -97,7 +126,7 @@ void bend(Chains& c, double stiffness, int threads, Strain* strain = nullptr) {
 // neighbours is smaller, the point moves toward their chord and the neighbours away,
 // keeping the three points' centroid.
 void limit_bends(Chains& c, double radii, int threads) {
-  each_piece(c, threads, nullptr, [&](std::size_t from, std::size_t to) {
+  each_piece(c, threads, nullptr, 2, [&](std::size_t from, std::size_t to) {
     for (std::size_t i = from + 1; i + 1 < to; ++i) {
       const glm::dvec3 mid = 0.5 * (c.pos[i - 1] + c.pos[i + 1]);
       const double half_chord = 0.5 * glm::distance(c.pos[i - 1], c.pos[i + 1]);
