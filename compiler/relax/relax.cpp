@@ -53,6 +53,10 @@ void each_piece(const Chains& c, int threads, const Strain* strain, std::size_t 
     for (std::size_t k = 0; k < spans; ++k)
       (k % 2 == 0 ? even : odd).push_back({from + points * k / spans, std::min(to, from + points * (k + 1) / spans + overlap)});
   }
+  if (even.empty() && (threads <= 1 || pieces < 2)) {  // nothing to share out
+    for (std::size_t piece = 0; piece < pieces; ++piece) work(c.first[piece], c.first[piece + 1]);
+    return;
+  }
   // The short pieces in blocks about equal in points, then the even spans: one phase.
   const std::size_t wanted = std::min<std::size_t>(short_pieces.size(), 4 * static_cast<std::size_t>(std::max(threads, 1)));
   std::vector<std::size_t> block_first(wanted + 1, short_pieces.size());  // into short_pieces
