@@ -96,8 +96,8 @@ struct Fabric {
   mesh::Mesh mesh;                 // the tubes stage's
   bool relaxed = false;
   relax::Stats relaxation;         // when relaxed
-  // Relaxed flat work: how its knot diagram changed (measure::relaxation_changes); work
-  // in the round is not checked (its crossings are not seen from one face).
+  // Relaxed: how its knot diagram changed (measure::relaxation_changes), seen from the
+  // face; work in the round unrolled into its flat frame (relax::tube_as_flat).
   bool crossings_checked = false;
   measure::CrossingChanges crossings;
   // Relaxed whole because, relaxed by repeat, a yarn passed through another.

@@ -5,6 +5,7 @@
 // The relaxation by a repeat: tests/repeat_test.cpp.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <regex>
 
 #include <glm/geometric.hpp>
@@ -84,6 +85,36 @@ TEST_P(Relaxed, ClearsEveryContactKeepingLengthsAndCrossings) {
 INSTANTIATE_TEST_SUITE_P(Fabrics, Relaxed,
                          testing::Values("jersey", "garter", "rib_1x1", "seed", "half_cardigan", "full_cardigan", "cable_2x2",
                                          "stranded"));
+
+// Work in the round is checked too, seen from outside the tube (relax::tube_as_flat, the
+// chains unrolled and cut where a round runs into the next): every loop crosses others,
+// and relaxed none is passed through. One stretch of the laid yarn pushed in behind the
+// yarn it crossed in front of shows as a flip.
+TEST(Relax, ATubesCrossingsAreCheckedUnrolledSeenFromOutside) {
+  const Pattern pattern = at_paper_gauge("jersey_in_the_round");
+  ASSERT_EQ(pattern.knitting, Knitting::round);
+  const Fabric after = compile(pattern, centrelines(true));
+  ASSERT_TRUE(after.relaxed);
+  ASSERT_TRUE(after.crossings_checked);
+  EXPECT_GT(after.crossings.kept, 2 * after.layout.loops.size());
+  EXPECT_EQ(measure::passed_through(after.crossings), 0u);
+
+  const Fabric before = compile(pattern, centrelines(false));
+  const auto laid = relax::refine(yarn_paths::trace(before.layout, yarn_paths::LoopModel::smooth), cores(pattern),
+                                  relax::Options{}.spacing);
+  double thickest = 0.0;
+  for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
+  auto seen = relax::tube_as_flat(before.layout, laid, laid);
+  ASSERT_GT(seen.laid.size(), laid.size());  // cut at each round's start
+  const auto same = measure::relaxation_changes(seen.laid, seen.relaxed, thickest);
+  EXPECT_EQ(same.kept, measure::crossings(seen.laid).size() - same.ties);
+  EXPECT_EQ(measure::passed_through(same), 0u);
+  const auto crossings = measure::crossings(seen.laid);
+  const auto deep = std::find_if(crossings.begin(), crossings.end(), [](const measure::Crossing& c) { return c.depth > 0.3; });
+  ASSERT_NE(deep, crossings.end());
+  for (std::uint32_t k = deep->segment_a; k <= deep->segment_a + 1; ++k) seen.relaxed[deep->piece_a].data_points[k].z -= 2.0 * deep->depth;
+  EXPECT_GE(measure::passed_through(measure::relaxation_changes(seen.laid, seen.relaxed, thickest)), 1u);
+}
 
 TEST(Relax, SameForAnyThreadCount) {
   const std::string source =

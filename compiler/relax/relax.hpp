@@ -120,6 +120,18 @@ struct Relaxed {
 std::vector<std::vector<std::uint32_t>> same_as_by_piece(const std::vector<yarn_paths::Piece>& pieces,
                                                          const std::vector<std::uint32_t>& same_as);
 
+// Work in the round as flat work, for the crossings check (measure::relaxation_changes
+// looks along -z at the face): `laid` (relax::refine's chains) and `relaxed` (the same
+// points moved) unrolled into the layout's flat frame, z out of the tube, each piece cut
+// where its yarn passes from one round into the next (there the unrolled yarn jumps back a
+// round's width), both at the same points. The points stay in order, so a Relaxed's
+// same_as still holds. The pieces carry their points and yarn only.
+struct TubeAsFlat {
+  std::vector<yarn_paths::Piece> laid, relaxed;
+};
+TubeAsFlat tube_as_flat(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& laid,
+                                const std::vector<yarn_paths::Piece>& relaxed);
+
 // The pieces with points inserted on each piece's interpolating curve (chord-length
 // parametrisation) so that no two consecutive points are more than spacing x d apart;
 // the old points are kept and loop_first follows them. diameter: mm, per Pattern::yarns

@@ -195,9 +195,10 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   });
   const glm::dvec2 rest_period(repeat.wales * layout.loop_width, repeat.courses * layout.course_spacing);
   if (relaxed_tile.stats.period.x <= 0.0 || relaxed_tile.stats.period.y <= 0.0) return std::nullopt;
-  // A tube has no crossings check after (measure::crossings projects flat work only): a
-  // tile that did not settle, whose courses may differ where the seam sets one beside
-  // another, is not copied round it.
+  // A tube is not relaxed again where its yarns passed through each other (compile.cpp:
+  // its whole relaxation keeps no crossing's side either): a tile that did not settle,
+  // whose courses may differ where the seam sets one beside another, is not copied round
+  // it.
   if (round && relaxed_tile.stats.iterations >= tile_options.max_iterations) return std::nullopt;
   const glm::dvec2 stretch = relaxed_tile.stats.period / rest_period;  // the lattice's, per axis
   // The whole fabric stretched as the tile was, about the tile's first loop's P0 (a tube
@@ -312,8 +313,9 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   Crop part = crop(chains, start, needed_after);
   part.needed = std::move(needed);
   if (deeper_than_laid(layout, part.pieces, sizes, part.start, options.threads)) {
-    // A tube has no crossings check after (measure::crossings projects flat work only):
-    // relaxed whole. So is flat work whose edges are half of it or more: carried there,
+    // A tube is relaxed whole: carried, it keeps no crossing's side (the sweeps' memory
+    // of them is flat work's), and it is not relaxed again where a yarn passed through
+    // another (compile.cpp). So is flat work whose edges are half of it or more: carried there,
     // its edges would cost about what the whole does, and where the carried yarn passes
     // through another (the compile's crossings check) it is relaxed whole after all.
     // Else it is carried to the tile's places over sweeps, from the fabric as laid,

@@ -1,7 +1,12 @@
 // A tube's chains unrolled into its layout's flat frame (tube.hpp).
 #include "relax/tube.hpp"
 
+#include <cmath>
 #include <cstddef>
+
+#include <glm/geometric.hpp>
+
+#include "relax/relax.hpp"
 
 namespace knitc::relax {
 
@@ -29,6 +34,35 @@ Unrolled unroll(const layout::Layout& layout, const std::vector<yarn_paths::Piec
       const double c = layout::course_width(layout, loop.course);
       circumference[k] = c;
       if (c > 0.0) points[k] = layout::unroll(points[k], c, layout.course_spacing, middle);
+    }
+  }
+  return out;
+}
+
+TubeAsFlat tube_as_flat(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& laid,
+                        const std::vector<yarn_paths::Piece>& relaxed) {
+  const Unrolled before = unroll(layout, laid), after = unroll(layout, relaxed);
+  TubeAsFlat out;
+  for (std::size_t i = 0; i < laid.size(); ++i) {
+    const auto &a = before.pieces[i].data_points, &b = after.pieces[i].data_points;
+    std::size_t from = 0;
+    for (std::size_t k = 0; k <= a.size(); ++k) {
+      // Unrolling keeps a segment's length but for the curvature (a few percent): one
+      // twice as long or more joins points unrolled a round apart (a round's last loop and
+      // the next round's first), or a point left as traced (on no loop) to one unrolled.
+      // Either list's: both are cut at the same points.
+      auto jumps = [&](const std::vector<glm::dvec3>& unrolled, const std::vector<glm::dvec3>& rolled) {
+        return glm::distance(unrolled[k], unrolled[k - 1]) > 2.0 * glm::distance(rolled[k], rolled[k - 1]) + 1e-9;
+      };
+      const bool cut = k == a.size() || (k > from && (jumps(a, laid[i].data_points) || jumps(b, relaxed[i].data_points)));
+      if (!cut) continue;
+      yarn_paths::Piece x, y;
+      x.yarn = y.yarn = laid[i].yarn;
+      x.data_points.assign(a.begin() + static_cast<std::ptrdiff_t>(from), a.begin() + static_cast<std::ptrdiff_t>(k));
+      y.data_points.assign(b.begin() + static_cast<std::ptrdiff_t>(from), b.begin() + static_cast<std::ptrdiff_t>(k));
+      out.laid.push_back(std::move(x));
+      out.relaxed.push_back(std::move(y));
+      from = k;
     }
   }
   return out;
