@@ -286,6 +286,50 @@ TEST(Crossings, OnlyTheCountedAreCountedButAllMatch) {
   EXPECT_EQ(measure::compare(x, x, 2, 0, 0.0, {}, {0, 0}, {1, 0}).kept, 1u);
 }
 
+// Two segments of one yarn that share a point are never a contact, however long: no push
+// can part them, and listed, their overlap of a whole core diameter kept the sweeps from
+// settling (KnitScript's cable swatch, where the curve through two close data points
+// swings wide and refine's segments along it are 0.9 mm long, ran to the 400-sweep limit).
+TEST(Relax, SegmentsSharingAPointAreNotAContact) {
+  relax::Chains c;
+  c.pos = {{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {1.5, 0.8, 0.0}};  // 1 mm and 0.94 mm; free d 0.2
+  c.rest = c.pos;
+  c.radius.assign(3, 0.05);
+  c.shell.assign(3, 0.1);
+  c.along = {0.0, 1.0, 1.0 + glm::distance(c.pos[1], c.pos[2])};
+  c.inv_mass.assign(3, 1.0);
+  c.piece.assign(3, 0);
+  c.on_loop.assign(3, 1);
+  c.segment = {1, 1, 0};
+  c.contactable = {1, 1, 0};
+  c.rest_length = {1.0, c.along[2] - 1.0, 0.0};
+  c.first = {0, 3};
+  c.along_period = {0.0};
+  c.thickest = 0.2;
+  c.thickest_core = 0.1;
+  relax::Contacts contacts(glm::dvec2(0.0), relax::contact_margin * c.thickest, false, 1);
+  contacts.find(c);
+  EXPECT_EQ(contacts.deepest(c), 0.0);
+  // A third segment off the yarn's end, lying across the first: a contact.
+  c.pos.push_back({0.5, -0.3, 0.05});
+  c.pos.push_back({0.5, 0.3, 0.05});
+  c.rest = c.pos;
+  for (auto* v : {&c.radius}) v->resize(5, 0.05);
+  c.shell.resize(5, 0.1);
+  c.along.push_back(0.0);
+  c.along.push_back(0.6);
+  c.inv_mass.resize(5, 1.0);
+  c.piece.resize(5, 1);
+  c.on_loop.resize(5, 1);
+  c.segment = {1, 1, 0, 1, 0};
+  c.contactable = {1, 1, 0, 1, 0};
+  c.rest_length = {1.0, c.along[2] - 1.0, 0.0, 0.6, 0.0};
+  c.first = {0, 3, 5};
+  c.along_period = {0.0, 0.0};
+  contacts.find(c);
+  EXPECT_NEAR(contacts.deepest(c), 0.05, 1e-6);  // 0.1 of reach (a float), 0.05 apart
+}
+
 TEST(Relax, ClosestPointsOfSegments) {
   double s, t;
   relax::closest_points({0, 0, 0}, {2, 0, 0}, {1, -1, 1}, {1, 1, 1}, s, t);  // crossing, 1 apart

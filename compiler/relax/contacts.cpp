@@ -204,6 +204,10 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
       grid.columns.near(cell, [&](const spatial::Columns::Entry& b) {
             const std::size_t bs = b.item;
             if (bs <= a) return;
+            // Two segments that share a point cannot be pushed apart: not a contact, however
+            // long they are (where the curve through two close data points swings wide,
+            // refine's segments along it are long enough to pass the test below).
+            if (bs == a + 1 && b.sx == 0 && b.sy == 0 && c.segment[a] && c.piece[a] == c.piece[bs]) return;
             // One stretch of yarn, not a contact: of one piece, close along it (or along its
             // image, a period on, when its yarn runs on into the next tile).
             if (b.sy == 0 && c.piece[a] == c.piece[bs] &&
