@@ -1,7 +1,7 @@
 // The fabric as a knot diagram: where two stretches of yarn cross, seen from the face
 // (along -z), and which passes in front. For flat work, or a tube unrolled into its
-// layout's flat frame (relax::tube_as_flat). Tells whether a change to the geometry (the relaxation) kept every yarn on
-// its side of every other.
+// layout's flat frame (relax::tube_as_flat). Tells whether a change to the geometry (the
+// relaxation) kept every yarn on its side of every other.
 #pragma once
 
 #include <cstdint>

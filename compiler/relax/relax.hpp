@@ -130,7 +130,7 @@ struct TubeAsFlat {
   std::vector<yarn_paths::Piece> laid, relaxed;
 };
 TubeAsFlat tube_as_flat(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& laid,
-                                const std::vector<yarn_paths::Piece>& relaxed);
+                        const std::vector<yarn_paths::Piece>& relaxed);
 
 // The pieces with points inserted on each piece's interpolating curve (chord-length
 // parametrisation) so that no two consecutive points are more than spacing x d apart;

@@ -1,7 +1,6 @@
 // A tube's chains unrolled into its layout's flat frame (tube.hpp).
 #include "relax/tube.hpp"
 
-#include <cmath>
 #include <cstddef>
 
 #include <glm/geometric.hpp>
@@ -43,18 +42,18 @@ TubeAsFlat tube_as_flat(const layout::Layout& layout, const std::vector<yarn_pat
                         const std::vector<yarn_paths::Piece>& relaxed) {
   const Unrolled before = unroll(layout, laid), after = unroll(layout, relaxed);
   TubeAsFlat out;
+  // Unrolling keeps a segment's length but for the curvature (a few percent): one twice as
+  // long or more joins points unrolled a round apart (a round's last loop and the next
+  // round's first), or a point left as traced (on no loop) to one unrolled.
+  auto jumps = [](const std::vector<glm::dvec3>& unrolled, const std::vector<glm::dvec3>& rolled, std::size_t k) {
+    return glm::distance(unrolled[k], unrolled[k - 1]) > 2.0 * glm::distance(rolled[k], rolled[k - 1]) + 1e-9;
+  };
   for (std::size_t i = 0; i < laid.size(); ++i) {
     const auto &a = before.pieces[i].data_points, &b = after.pieces[i].data_points;
     std::size_t from = 0;
     for (std::size_t k = 0; k <= a.size(); ++k) {
-      // Unrolling keeps a segment's length but for the curvature (a few percent): one
-      // twice as long or more joins points unrolled a round apart (a round's last loop and
-      // the next round's first), or a point left as traced (on no loop) to one unrolled.
-      // Either list's: both are cut at the same points.
-      auto jumps = [&](const std::vector<glm::dvec3>& unrolled, const std::vector<glm::dvec3>& rolled) {
-        return glm::distance(unrolled[k], unrolled[k - 1]) > 2.0 * glm::distance(rolled[k], rolled[k - 1]) + 1e-9;
-      };
-      const bool cut = k == a.size() || (k > from && (jumps(a, laid[i].data_points) || jumps(b, relaxed[i].data_points)));
+      // Where either list jumps: both are cut at the same points.
+      const bool cut = k == a.size() || (k > from && (jumps(a, laid[i].data_points, k) || jumps(b, relaxed[i].data_points, k)));
       if (!cut) continue;
       yarn_paths::Piece x, y;
       x.yarn = y.yarn = laid[i].yarn;
