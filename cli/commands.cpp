@@ -119,7 +119,7 @@ void add_compile_options(CLI::App* cmd, Args& a) {
                                 "without EXT_mesh_gpu_instancing)");
   cmd->add_flag("--instance", a.instance,
                 "mesh a relaxed repeat once and place it across the fabric (EXT_mesh_gpu_instancing) whatever its size; by "
-                "default only a fabric whose flat mesh would pass 2 million vertices is")
+                "default only a fabric whose flat mesh would pass 1 million vertices is")
       ->excludes(flatten);
   cmd->add_flag("--stats", a.stats, "print counts, bounds and measures of the result");
   cmd->add_option("--threads", a.compile.threads, "threads to use (default: every core); the output is the same for any")

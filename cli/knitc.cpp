@@ -324,6 +324,8 @@ int dispatch(Commands& c) {
     }
     c.render.render.width = size->first;
     c.render.render.height = size->second;
+    // A close-up is meshed for the loops it shows, not for the whole fabric's view.
+    if (c.render.close_up > 0.0) c.render.compile.close_up_loop_pixels = size->first / c.render.close_up;
     return render(c.render);
   }
   if (c.snapshot_cmd->parsed()) return snapshot(c.snapshot);

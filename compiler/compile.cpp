@@ -24,15 +24,17 @@ Density density(Quality quality) {
   return {12, 0.01};
 }
 
-ViewDensity density_for_view(const layout::Layout& layout, int pixels) {
-  const double width = static_cast<double>(layout.wales) * layout.loop_width;
-  const double height = static_cast<double>(layout.courses) * layout.course_spacing;
-  const double extent = std::max({width, height, layout.loop_width});
-  const double loop = static_cast<double>(pixels) * layout.loop_width / extent;
+ViewDensity density_for_view(const layout::Layout& layout, int width, int height) {
+  const double across = std::max(static_cast<double>(layout.wales), 1.0) * layout.loop_width;
+  const double up = std::max(static_cast<double>(layout.courses) * layout.course_spacing, layout.loop_width);
+  return density_for_loop_pixels(std::min(width / across, height / up) * layout.loop_width);
+}
+
+ViewDensity density_for_loop_pixels(double loop) {
   if (loop >= 40.0) return {density(Quality::normal), loop};
   if (loop >= 16.0) return {{8, 0.025}, loop};
   // A loop a few pixels across: a chord error of about half a pixel (a loop's width over
-  // 8 on the yarn's diameter, 2 / pixels of it), never finer than draft, at most a quarter;
+  // 8 on the yarn's diameter, 2 / pixels of it), never finer than draft, at most a half;
   // round the ring, the fewest sides whose chord error (the sagitta of a side, (1 - cos
   // pi/n) / 2 of the diameter) is within it.
   const double tolerance = std::clamp(2.0 / loop, 0.05, coarsest_view_density.chord_tolerance);
@@ -145,13 +147,16 @@ Fabric compile(const Pattern& pattern, layout::Layout layout, const CompileOptio
   fabric.layout = std::move(layout);
   CompileOptions options = given;
   if (given.density_from_view) {
-    const ViewDensity view = density_for_view(fabric.layout);
+    const ViewDensity whole = density_for_view(fabric.layout);
+    const bool closer = given.close_up_loop_pixels > whole.loop_pixels;
+    const ViewDensity view = closer ? density_for_loop_pixels(given.close_up_loop_pixels) : whole;
     options.sides = view.density.sides;
     options.chord_tolerance = view.density.chord_tolerance;
     if (given.textures_from_view) options.textures = view.maps;
     char text[200];
-    std::snprintf(text, sizeof text, "from the view: a loop spans %.0f px of a %d px full view%s", view.loop_pixels, view_pixels,
-                  given.textures_from_view && given.textures && !view.maps ? " (no baked maps: their detail is under a pixel)" : "");
+    const char* maps = given.textures_from_view && given.textures && !view.maps ? " (no baked maps: their detail is under a pixel)" : "";
+    if (closer) std::snprintf(text, sizeof text, "from the view: a loop spans %.0f px of the close-up%s", view.loop_pixels, maps);
+    else std::snprintf(text, sizeof text, "from the view: a loop spans %.0f px of a %d x %d px full view%s", view.loop_pixels, view_width, view_height, maps);
     fabric.density_choice = text;
   } else {
     fabric.density_choice = "as given";

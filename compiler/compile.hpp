@@ -35,27 +35,32 @@ struct Density {
 };
 Density density(Quality quality);  // draft: 6, 5%; normal: 12, 1%; fine: 24, 0.25%
 
-// The density a fabric needs seen whole at `pixels` across (the longer side of the view):
-// how many pixels a loop spans there picks it. A loop of 40 pixels or more is drawn at
-// normal quality, of 16 or more at 8 sides and 2.5%. Smaller, the chord error along the
-// yarn is 2 / pixels of its diameter (5% to 25%: about half a pixel), and the ring has the
-// fewest sides (at least 4) whose own chord error is no larger: a sweater front is not
-// meshed at a swatch close-up's density. Below 16 pixels a loop's yarn is some 4 pixels
-// across and its plies and fibres under a pixel, so the baked maps would show only their
-// average: `maps` says whether they are worth drawing.
-inline constexpr int view_pixels = 1920;
-inline constexpr Density coarsest_view_density{4, 0.25};
+// The density a fabric needs seen whole in a full view of `width` x `height` pixels (a
+// 1920 x 1080 screen; the fabric fits both ways, so a garment front taller than it is wide
+// fits its height into the 1080): how many pixels a loop spans there picks it. A loop of 40
+// pixels or more is drawn at normal quality, of 16 or more at 8 sides and 2.5%. Smaller,
+// the chord error along the yarn is 2 / pixels of its diameter (5% to 50%: about half a
+// pixel), and the ring has the fewest sides (at least 3) whose own chord error is no
+// larger: a sweater front is not meshed at a swatch close-up's density. Below 16 pixels a
+// loop's yarn is some 4 pixels across and its plies and fibres under a pixel, so the baked
+// maps would show only their average: `maps` says whether they are worth drawing.
+inline constexpr int view_width = 1920, view_height = 1080;
+inline constexpr Density coarsest_view_density{3, 0.5};
 struct ViewDensity {
   Density density;
   double loop_pixels;
   bool maps = true;
 };
-ViewDensity density_for_view(const layout::Layout& layout, int pixels = view_pixels);
+ViewDensity density_for_view(const layout::Layout& layout, int width = view_width, int height = view_height);
+// The same rule for a loop `loop_pixels` across.
+ViewDensity density_for_loop_pixels(double loop_pixels);
 
 // Whether the repeat of a fabric relaxed by repeat is meshed once and placed many times
-// (tiles/): automatic does it for a fabric whose plain mesh would pass flat_vertices.
+// (tiles/): automatic does it for a fabric whose plain mesh would pass flat_vertices (a
+// plain .glb of some 50 MB, which a browser takes about a second to load; instanced, a
+// sweater front is 3 MB and loads in a tenth of that).
 enum class Instancing { automatic, flatten, instance };
-inline constexpr std::uint64_t flat_vertices = 2'000'000;
+inline constexpr std::uint64_t flat_vertices = 1'000'000;
 
 struct CompileOptions {
   yarn_paths::LoopModel loop_model = yarn_paths::LoopModel::smooth;
@@ -72,6 +77,9 @@ struct CompileOptions {
   // Sides and tolerance from the fabric's size in a full view (density_for_view) rather
   // than the two fields above: what the programs do unless a quality or either is given.
   bool density_from_view = false;
+  // With density_from_view, a close-up this many pixels a loop (a picture of a few loops
+  // across): the density is the finer of this view's and the full view's. 0: none.
+  double close_up_loop_pixels = 0.0;
   Instancing instancing = Instancing::automatic;
   // Each yarn drawn as its plies' cores and its fibres and flyaways (fibres/fibres.hpp),
   // for close-ups, rather than as a tube; never instanced.

@@ -283,6 +283,24 @@ TEST(Cli, RendersAPreviewPng) {
   fs::remove_all(dir);
 }
 
+// The density follows the picture asked for: a fabric seen whole is meshed for its full
+// view, a close-up of a few loops for the loops it shows.
+TEST(Cli, ACloseUpIsMeshedForTheLoopsItShows) {
+  const fs::path dir = test::scratch_dir("close_up");
+  const std::string script = (dir / "wide.lua").string();
+  test::write_text(script, test::jersey_source(100, 40));
+  const auto whole = test::run_knitc("render '" + script + "' --relax off --size 200x150 --samples 1 --stats -o " + quoted(dir / "w.png"));
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  EXPECT_NE(whole.err.find("8 sides, tolerance 0.025 d; from the view: a loop spans 19 px of a 1920 x 1080 px full view"),
+            std::string::npos) << whole.err;
+  const auto close = test::run_knitc("render '" + script + "' --relax off --size 200x150 --samples 1 --close-up 4 --stats -o " +
+                                     quoted(dir / "c.png"));
+  ASSERT_EQ(close.exit_code, 0) << close.err;
+  EXPECT_NE(close.err.find("12 sides, tolerance 0.01 d; from the view: a loop spans 50 px of the close-up"), std::string::npos)
+      << close.err;
+  fs::remove_all(dir);
+}
+
 TEST(Cli, ChartCheckAndReference) {
   const auto chart = test::run_knitc("chart patterns/jersey.lua");
   ASSERT_EQ(chart.exit_code, 0) << chart.err;

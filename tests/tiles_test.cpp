@@ -159,7 +159,7 @@ TEST(Tiles, ThePolicySaysWhatItChoseAndWhy) {
   // Small: flat, within the size written flat.
   const Fabric small = compile(test::jersey(12, 12), relaxed_options(Instancing::automatic));
   EXPECT_FALSE(small.instanced);
-  EXPECT_NE(small.mesh_choice.find("within the 2.0 million knitc writes flat"), std::string::npos) << small.mesh_choice;
+  EXPECT_NE(small.mesh_choice.find("within the 1.0 million knitc writes flat"), std::string::npos) << small.mesh_choice;
   EXPECT_TRUE(small.mesh.instanced.empty());
   // Asked for, but not relaxed: no repeat was tiled, and it says so.
   CompileOptions unrelaxed = relaxed_options(Instancing::instance);
@@ -188,20 +188,26 @@ TEST(Tiles, TheDensityFollowsHowLargeALoopIsInAFullView) {
   EXPECT_EQ(swatch.density.sides, 12);  // a swatch close-up: normal quality
   EXPECT_GT(swatch.loop_pixels, 40.0);
   EXPECT_TRUE(swatch.maps);
-  const auto front = density_for_view(layout::lay_out(test::jersey(150, 250)));
+  const layout::Layout front_layout = layout::lay_out(test::jersey(150, 250));
+  const auto front = density_for_view(front_layout);
   EXPECT_LT(front.loop_pixels, 16.0);  // a sweater front: a loop is a few pixels
-  EXPECT_EQ(front.density.sides, 4);   // a square's chord error, 15% of d, within the 24% along the yarn
+  // Taller than wide, it fits its height into the view's 1080 pixels, not its 1920.
+  EXPECT_NEAR(front.loop_pixels, 1080.0 * front_layout.loop_width / (front_layout.courses * front_layout.course_spacing), 1e-9);
+  EXPECT_EQ(front.density.sides, 3);  // a triangle's chord error, 25% of d, within the 42% along the yarn
   EXPECT_NEAR(front.density.chord_tolerance, 2.0 / front.loop_pixels, 1e-12);
   EXPECT_FALSE(front.maps);  // its plies under a pixel
   const auto middle = density_for_view(layout::lay_out(test::jersey(80, 60)));
   EXPECT_EQ(middle.density.sides, 8);
   EXPECT_TRUE(middle.maps);
-  // Between: a loop of 14 pixels takes 2/14 = 14% along the yarn, past a square's 15%, so
-  // the ring is a pentagon's (10%).
-  const auto between = density_for_view(layout::lay_out(test::jersey(137, 100)));
-  ASSERT_GT(between.loop_pixels, 13.5);
-  ASSERT_LT(between.loop_pixels, 14.5);
+  // Between: a loop of 14.8 pixels takes 2/14.8 = 13.5% along the yarn, past a square's
+  // 15%, so the ring is a pentagon's (10%).
+  const auto between = density_for_view(layout::lay_out(test::jersey(120, 80)));
+  ASSERT_GT(between.loop_pixels, 14.5);
+  ASSERT_LT(between.loop_pixels, 15.0);
   EXPECT_EQ(between.density.sides, 5);
+  // A close-up of a few loops across: the rule for its loop's pixels.
+  EXPECT_EQ(density_for_loop_pixels(69.0).density.sides, 12);
+  EXPECT_EQ(density_for_loop_pixels(4.76).density.sides, front.density.sides);
 }
 
 // Before the layout, a fabric is refused by the fewest vertices it could have. From the
@@ -219,7 +225,7 @@ TEST(Tiles, TheBoundBeforeTheLayoutTakesTheCoarsestDensityTheViewCanChoose) {
   EXPECT_LT(least_vertices(p, view), least_vertices(p, given) / 5.0);
   // Still a lower bound: the fabric as the view meshes it has more.
   const Fabric fabric = compile(p, view);
-  EXPECT_EQ(fabric.density.sides, 4);
+  EXPECT_EQ(fabric.density.sides, density_for_view(fabric.layout).density.sides);
   EXPECT_GT(static_cast<double>(tiles::drawn(fabric.mesh).vertices), least_vertices(p, view));
 }
 
