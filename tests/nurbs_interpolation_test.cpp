@@ -365,6 +365,47 @@ TEST(NurbsInterpolate, ALongCurveIsTheSameOnAnyNumberOfThreads) {
   }
 }
 
+TEST(NurbsInterpolate, ALongerCurveIsSolvedInWindowsThroughEveryPoint) {
+  // Past two windows of rows (65,536 each), the system is solved window by window, each
+  // with 128 rows either side: every data point is still met to rounding (a seam between
+  // windows that disagreed would miss the points there), with and without end
+  // derivatives, evenly and very unevenly spaced, and the same bits on 1 and 3 threads.
+  std::mt19937 rng(2026);
+  std::vector<Point> uneven{Point(0.0)};
+  Point dir(1, 0, 0);
+  while (uneven.size() < 200000) {
+    dir = glm::normalize(dir + 1.2 * random_cloud(rng, 1)[0]);
+    uneven.push_back(uneven.back() + std::exp(uniform(rng, std::log(1e-3), 0.0)) * dir);
+  }
+  for (const auto& q : {random_walk(rng, 300000), uneven}) {
+    const double scale = magnitude(q);
+    for (const bool ends : {false, true}) {
+      SCOPED_TRACE(std::to_string(q.size()) + (ends ? " points, end derivatives" : " points"));
+      InterpolationOptions o;
+      if (ends) {
+        o.start_derivative = Point(1.0, 0.0, 0.0);
+        o.end_derivative = Point(0.0, 1.0, 0.0);
+      }
+      o.threads = 1;
+      const auto one = nurbs::interpolate(q, o);
+      o.threads = 3;
+      const auto three = nurbs::interpolate(q, o);
+      ASSERT_EQ(one.curve.points, three.curve.points);
+      double worst = 0.0;
+      std::size_t at = 0;
+      for (std::size_t k = 0; k < q.size(); ++k) {
+        const double off = glm::distance(nurbs::evaluate(three.curve, three.parameters[k]), q[k]) / scale;
+        if (off > worst) worst = off, at = k;
+      }
+      EXPECT_LE(worst, 1e-12) << "at point " << at;
+      if (ends) {
+        EXPECT_LE(glm::distance(nurbs::derivatives(three.curve, 0.0, 1)[1], *o.start_derivative), 1e-9);
+        EXPECT_LE(glm::distance(nurbs::derivatives(three.curve, 1.0, 1)[1], *o.end_derivative), 1e-9);
+      }
+    }
+  }
+}
+
 TEST(NurbsInterpolate, EndDerivativesOfTwoPointsGiveTheHermiteCubic) {
   const Point a(0, 0, 0), b(2, 1, 0), d0(3, 0, 1), d1(0, 3, -1);
   InterpolationOptions o;

@@ -105,16 +105,25 @@ std::vector<double> data_parameters(std::span<const Point> q, Parametrisation ki
   return u;
 }
 
-// Fills row `row` of the matrix with the basis functions at u. span: the knot span found
-// for the last row (the rows' parameters ascend), walked on to u's.
-void put_basis_row(ProfileMatrix& m, const Curve& c, int last, int row, double u, int& span) {
+// The knot span holding u (the control points are not made yet, so find_span cannot be
+// asked): the last s in [p, last] with knots[s] <= u.
+int span_of(const Curve& c, int last, double u) {
+  const auto from = c.knots.begin() + c.degree, to = c.knots.begin() + last + 1;
+  return std::max(c.degree, static_cast<int>(std::upper_bound(from, to, u) - c.knots.begin()) - 1);
+}
+
+// Fills row `row` of the system, as row row - lo of `m` whose columns start at lo (those
+// past hi dropped), with the basis functions at u. span: the knot span found for the
+// last row (the rows' parameters ascend), walked on to u's.
+void put_basis_row(ProfileMatrix& m, const Curve& c, int last, int row, double u, int& span, int lo, int hi) {
   while (span < last && c.knots[static_cast<std::size_t>(span) + 1] <= u) ++span;
-  // find_span's span (the curve's control points are not made yet: it cannot be asked).
-  assert(c.knots[static_cast<std::size_t>(span)] <= u && (span == last || u < c.knots[static_cast<std::size_t>(span) + 1]));
+  assert(span == span_of(c, last, u));
   BasisTable N;
   basis_derivatives(c, span, u, 0, N);
-  m.start_row(row, span - c.degree);
-  for (int j = 0; j <= c.degree; ++j) m.at(row, span - c.degree + j) = N[0][j];
+  const int first = span - c.degree;
+  m.start_row(row - lo, std::max(first, lo) - lo);
+  for (int j = 0; j <= c.degree; ++j)
+    if (first + j >= lo && first + j < hi) m.at(row - lo, first + j - lo) = N[0][j];
 }
 
 }  // namespace
@@ -152,47 +161,65 @@ Interpolant interpolate(std::span<const Point> q, const InterpolationOptions& op
   }
   const int last = controls - 1;  // the last control point's index
 
-  // Each block of rows starts its walk where one walk over every row found its first span.
-  constexpr int block = 16384;
+  // Rows lo to hi - 1 of the system, as rows 0 to hi - lo - 1 of m and rhs (the columns
+  // outside [lo, hi) dropped), the data rows filled in blocks on `threads`.
   const int first_row = with_ends ? 1 : 0, last_row = with_ends ? n - 1 : n;  // data rows' k
-  const int rows = std::max(0, last_row - first_row + 1);
-  const int blocks = (rows + block - 1) / block;
-  std::vector<int> block_span(static_cast<std::size_t>(blocks), p);
-  {
-    int walk = p;
-    for (int k = first_row; k <= last_row; k += block) {
-      while (walk < last && c.knots[static_cast<std::size_t>(walk) + 1] <= ub[k]) ++walk;
-      block_span[static_cast<std::size_t>((k - first_row) / block)] = walk;
-    }
-  }
-  ProfileMatrix m(controls, p);
-  std::vector<Point> rhs = with_ends ? std::vector<Point>(static_cast<std::size_t>(controls)) : std::vector<Point>(q.begin(), q.end());
-  parallel_for(static_cast<std::size_t>(blocks), thread_count(options.threads), [&](std::size_t b) {
-    int span = block_span[b];
-    const int from = first_row + static_cast<int>(b) * block, to = std::min(last_row, from + block - 1);
-    for (int k = from; k <= to; ++k) {
-      const int row = with_ends ? k + 1 : k;
-      put_basis_row(m, c, last, row, ub[static_cast<std::size_t>(k)], span);
-      if (with_ends) rhs[static_cast<std::size_t>(row)] = q[static_cast<std::size_t>(k)];
-    }
-  });
-  if (with_ends) {
+  const int shift = with_ends ? 1 : 0;                                        // a data row's row
+  auto fill = [&](ProfileMatrix& m, std::vector<Point>& rhs, int lo, int hi, int threads) {
+    constexpr int block = 16384;
+    const int k_from = std::max(first_row, lo - shift), k_to = std::min(last_row, hi - 1 - shift);
+    const int rows = std::max(0, k_to - k_from + 1);
+    parallel_for(static_cast<std::size_t>((rows + block - 1) / block), threads, [&](std::size_t b) {
+      const int from = k_from + static_cast<int>(b) * block, to = std::min(k_to, from + block - 1);
+      int span = span_of(c, last, ub[static_cast<std::size_t>(from)]);
+      for (int k = from; k <= to; ++k) {
+        put_basis_row(m, c, last, k + shift, ub[static_cast<std::size_t>(k)], span, lo, hi);
+        rhs[static_cast<std::size_t>(k + shift - lo)] = q[static_cast<std::size_t>(k)];
+      }
+    });
+    if (!with_ends) return;
     const double first = c.knots[p + 1];
     const double last_knot = c.knots[controls - 1];  // u_{m-p-1} with m the last knot index
-    for (const int r : {0, 1, n + 1, n + 2}) m.start_row(r, r == 1 ? 0 : r);
-    m.at(0, 0) = 1.0;
-    rhs[0] = q[0];
-    m.at(1, 0) = -1.0;
-    m.at(1, 1) = 1.0;
-    rhs[1] = (first / p) * *options.start_derivative;
-    m.at(n + 1, n + 1) = -1.0;
-    m.at(n + 1, n + 2) = 1.0;
-    rhs[n + 1] = ((1.0 - last_knot) / p) * *options.end_derivative;
-    m.at(n + 2, n + 2) = 1.0;
-    rhs[n + 2] = q[n];
+    auto row = [&](int r, std::initializer_list<std::pair<int, double>> cells, const Point& value) {
+      if (r < lo || r >= hi) return;
+      m.start_row(r - lo, std::max(r == 1 ? 0 : r, lo) - lo);
+      for (const auto& [col, v] : cells)
+        if (col >= lo && col < hi) m.at(r - lo, col - lo) = v;
+      rhs[static_cast<std::size_t>(r - lo)] = value;
+    };
+    row(0, {{0, 1.0}}, q[0]);
+    row(1, {{0, -1.0}, {1, 1.0}}, (first / p) * *options.start_derivative);
+    row(n + 1, {{n + 1, -1.0}, {n + 2, 1.0}}, ((1.0 - last_knot) / p) * *options.end_derivative);
+    row(n + 2, {{n + 2, 1.0}}, q[static_cast<std::size_t>(n)]);
+  };
+
+  // A long curve's system is solved in windows, in parallel: each solves its rows with
+  // `halo` more either side, its unknowns past them taken as 0, and keeps the middle. A
+  // control point's pull on another dies off as about 0.27^(rows between) (cubic
+  // interpolation's system is totally positive and near diagonally dominant), so past 128
+  // rows it is under any double's rounding: the same curve to rounding, and the same bits
+  // for any thread count, since the windows follow from the length alone. A window's
+  // system stays in the cache and is made afresh by the thread that solves it.
+  constexpr int window = 65536, halo = 128;
+  if (controls <= 2 * window) {
+    ProfileMatrix m(controls, p);
+    std::vector<Point> rhs(static_cast<std::size_t>(controls));
+    fill(m, rhs, 0, controls, thread_count(options.threads));
+    m.solve(rhs);
+    c.points = std::move(rhs);
+    return result;
   }
-  m.solve(rhs);
-  c.points = std::move(rhs);
+  c.points.resize(static_cast<std::size_t>(controls));
+  const int windows = (controls + window - 1) / window;
+  parallel_for(static_cast<std::size_t>(windows), thread_count(options.threads), [&](std::size_t w) {
+    const int a = static_cast<int>(w) * window, b = std::min(controls, a + window);
+    const int lo = std::max(0, a - halo), hi = std::min(controls, b + halo);
+    ProfileMatrix m(hi - lo, p);
+    std::vector<Point> rhs(static_cast<std::size_t>(hi - lo));
+    fill(m, rhs, lo, hi, 1);
+    m.solve(rhs);
+    std::copy(rhs.begin() + (a - lo), rhs.begin() + (b - lo), c.points.begin() + a);
+  });
   return result;
 }
 
