@@ -337,6 +337,17 @@ TEST(NurbsInterpolate, EndDerivativesArePassedThroughAndMet) {
   EXPECT_LE(vs_ref.error, 1e-9) << vs_ref.where;
 }
 
+// On `threads`, with end derivatives (+x at the start, +y at the end) or without.
+InterpolationOptions with_ends(bool ends, int threads) {
+  InterpolationOptions o;
+  if (ends) {
+    o.start_derivative = Point(1.0, 0.0, 0.0);
+    o.end_derivative = Point(0.0, 1.0, 0.0);
+  }
+  o.threads = threads;
+  return o;
+}
+
 TEST(NurbsInterpolate, ALongCurveIsTheSameOnAnyNumberOfThreads) {
   // Past one block of rows (16384), the rows are filled in blocks on several threads,
   // each walking its spans from the first it was given: the same curve, bit for bit,
@@ -346,12 +357,7 @@ TEST(NurbsInterpolate, ALongCurveIsTheSameOnAnyNumberOfThreads) {
   const double scale = magnitude(q);
   for (const bool ends : {false, true}) {
     SCOPED_TRACE(ends ? "end derivatives" : "no end derivatives");
-    InterpolationOptions o;
-    if (ends) {
-      o.start_derivative = Point(1.0, 0.0, 0.0);
-      o.end_derivative = Point(0.0, 1.0, 0.0);
-    }
-    o.threads = 1;
+    InterpolationOptions o = with_ends(ends, 1);
     const auto one = nurbs::interpolate(q, o);
     o.threads = 3;
     const auto three = nurbs::interpolate(q, o);
@@ -381,12 +387,7 @@ TEST(NurbsInterpolate, ALongerCurveIsSolvedInWindowsThroughEveryPoint) {
     const double scale = magnitude(q);
     for (const bool ends : {false, true}) {
       SCOPED_TRACE(std::to_string(q.size()) + (ends ? " points, end derivatives" : " points"));
-      InterpolationOptions o;
-      if (ends) {
-        o.start_derivative = Point(1.0, 0.0, 0.0);
-        o.end_derivative = Point(0.0, 1.0, 0.0);
-      }
-      o.threads = 1;
+      InterpolationOptions o = with_ends(ends, 1);
       const auto one = nurbs::interpolate(q, o);
       o.threads = 3;
       const auto three = nurbs::interpolate(q, o);
