@@ -97,6 +97,14 @@ void Machine::check_aligned(const Operation& op, Needle from, Needle to) const {
   }
 }
 
+void Machine::check_pile(const Operation& op, Needle n) {
+  const std::size_t held = pile_of(n).size();
+  if (held > static_cast<std::size_t>(profile_.most_loops))
+    fail(op, "needle " + name(n) + " holds " + std::to_string(held) + " loops, past the " + std::to_string(profile_.most_loops) +
+                 " a needle can knit off",
+         "knit the loops off sooner, or spread the tucks or the decrease over more needles");
+}
+
 void Machine::move(std::size_t index, Needle from, Needle to) {
   auto& source = pile_of(from);
   if (source.empty()) return;
@@ -106,6 +114,7 @@ void Machine::move(std::size_t index, Needle from, Needle to) {
     moved_at_[static_cast<std::size_t>(l)] = static_cast<int>(index);
   }
   pile_of(from).clear();
+  check_pile(program_.operations[index], to);
 }
 
 void Machine::run(std::size_t index) {
@@ -177,6 +186,7 @@ void Machine::run(std::size_t index) {
       auto& here = pile_of(op.needle);
       if (op.op == Opcode::tuck) {
         here.push_back(id);
+        check_pile(op, op.needle);
       } else {
         l.parents = here;
         if (op.op == Opcode::split) {
@@ -185,6 +195,7 @@ void Machine::run(std::size_t index) {
             there.push_back(p);
             moved_at_[static_cast<std::size_t>(p)] = static_cast<int>(index);
           }
+          check_pile(op, op.target);
         }
         auto& again = pile_of(op.needle);  // the target's insertion may have moved the map's storage
         again.assign(1, id);

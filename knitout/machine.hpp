@@ -20,6 +20,10 @@ struct Profile {
   double max_racking = 8;  // needle pitches either way
   int carriers = 10;
   bool sliders = true;     // slider needles (fs, bs) to hold loops in transfers
+  // Loops one needle may hold (tucks and stacked transfers): past a few a machine cannot
+  // knit them off, and every one would lie at one point (27 real programs and the CMU
+  // examples hold at most 3).
+  int most_loops = 8;
 };
 Profile profile_named(const std::string& name);  // throws std::invalid_argument for an unknown one
 // The profile a program's header names (";;Machine:", ";;Gauge:", ";;Width:"), else the SWG-like one.
@@ -59,6 +63,7 @@ class Machine {
   void check_needle(const Operation& op, Needle n);
   void check_carriers(const Operation& op);
   void check_aligned(const Operation& op, Needle from, Needle to) const;
+  void check_pile(const Operation& op, Needle n);
   void move(std::size_t index, Needle from, Needle to);
 
   const Program& program_;

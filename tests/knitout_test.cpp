@@ -115,6 +115,20 @@ TEST(KnitoutMachine, RefusesWhatTheMachineCannotDoWithTheProgramsSource) {
   EXPECT_NE(error_of(head + "inhook 1\ninhook 1\n").find("t.k:4: carrier 1 is in already"), std::string::npos);
   EXPECT_NE(error_of(head + "outhook 2\n").find("t.k:3: carrier 2 is not in"), std::string::npos);
   EXPECT_NE(error_of(head + "inhook 1\nrack 1\n").find("t.k:1: the program makes no loops"), std::string::npos);
+  // A pile past what a needle can knit off, by tucks, by transfers or by a split: refused
+  // at the line that makes it (20,000 tucks on one needle once ran out of memory).
+  std::string tucks = head + "inhook 1\n";
+  for (int i = 0; i < 20000; ++i) tucks += "tuck + f1 1\n";
+  EXPECT_EQ(error_of(tucks + "knit + f1 1\n"), "t.k:12: needle f1 holds 9 loops, past the 8 a needle can knit off; knit the loops off "
+                                               "sooner, or spread the tucks or the decrease over more needles");
+  std::string stacked = head + "inhook 1\n";
+  for (int n = 1; n <= 9; ++n) stacked += "knit + f" + std::to_string(n) + " 1\n";
+  stacked += "xfer f1 b1\n";
+  for (int n = 2; n <= 9; ++n) stacked += "rack " + std::to_string(n - 1) + "\nxfer f" + std::to_string(n) + " b1\n";
+  EXPECT_NE(error_of(stacked).find("t.k:29: needle b1 holds 9 loops"), std::string::npos) << error_of(stacked);
+  std::string split = head + "inhook 1\n";
+  for (int i = 0; i < 8; ++i) split += "tuck + f1 1\n";
+  EXPECT_NE(error_of(split + "tuck + b1 1\nsplit + f1 b1 1\n").find("t.k:13: needle b1 holds 9 loops"), std::string::npos);
 }
 
 TEST(KnitoutMachine, KeepsEachNeedlesPileAndMovesItWhole) {
