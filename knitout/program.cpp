@@ -82,8 +82,11 @@ struct Reader {
     if (!word.empty() && word.front() == '+') word.remove_prefix(1);
     double v = 0.0;
     const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), v);
-    if (word.empty() || error != std::errc() || end != word.data() + word.size() || !std::isfinite(v) || std::abs(v) > 1e6)
+    const bool read = !word.empty() && end == word.data() + word.size() && (error == std::errc() || error == std::errc::result_out_of_range);
+    if (!read || (error == std::errc() && std::isnan(v)))
       fail("'" + std::string(word) + "' is not a number", std::string("write the ") + what + " as a number, like 1, -0.75 or +0.25", source);
+    if (error != std::errc() || !std::isfinite(v) || std::abs(v) > 1e6)
+      fail("the " + std::string(what) + " " + std::string(word) + " is out of range", std::string("write the ") + what + " as a number of at most a million either way", source);
     return v;
   }
 

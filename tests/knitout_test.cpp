@@ -92,6 +92,10 @@ TEST(KnitoutParse, RefusesWhatIsNotKnitoutAtItsLine) {
   EXPECT_NE(error_of(";!knitout-2\ninhook 1\nknit + g1 1\n").find("t.k:3: 'g1' is not a needle"), std::string::npos);
   EXPECT_NE(error_of(";!knitout-2\ninhook 1\nknit * f1 1\n").find("t.k:3: '*' is not a direction"), std::string::npos);
   EXPECT_NE(error_of(";!knitout-2\nrack one\n").find("t.k:2: 'one' is not a number"), std::string::npos);
+  EXPECT_NE(error_of(";!knitout-2\nrack nan\n").find("t.k:2: 'nan' is not a number"), std::string::npos);
+  for (const char* huge : {"1000000000", "1e400", "-inf"})
+    EXPECT_NE(error_of(std::string(";!knitout-2\nrack ") + huge + "\n").find("t.k:2: the racking " + std::string(huge) + " is out of range"),
+              std::string::npos) << huge;
   EXPECT_NE(error_of(";!knitout-2\nxfer f1\n").find("t.k:2: 'xfer' takes 2 arguments, not 1"), std::string::npos);
   EXPECT_NE(error_of(";!knitout-2\nknit + f99999999999 1\n").find("is not a needle"), std::string::npos);
   EXPECT_NE(error_of(std::string(";!knitout-2\nknit + f1 1\0\n", 25)).find("NUL byte"), std::string::npos);
