@@ -51,7 +51,7 @@ TEST(Repeat, ATubesGridRunsOnPastTheRoundsStart) {
 }
 
 // The repeat is found from the layout: the smallest block of loops that repeats across
-// the interior, taken whole times to at least four loops each way.
+// the interior, taken whole times to at least four wales and two courses.
 TEST(Repeat, IsFoundFromTheLayout) {
   auto repeat_of = [](const std::string& body) {
     const std::string source =
@@ -62,11 +62,15 @@ TEST(Repeat, IsFoundFromTheLayout) {
   const auto jersey = repeat_of("cast_on(12)\nfor _ = 1, 6 do row \"k\" row \"p\" end\n");
   ASSERT_TRUE(jersey);
   EXPECT_EQ(jersey->wales, 4);    // one wale, four times
-  EXPECT_EQ(jersey->courses, 4);  // a knit row and a purl row, twice
+  EXPECT_EQ(jersey->courses, 2);  // a knit row and a purl row
   const auto rib = repeat_of("cast_on(18)\nrows(12, \"k3, p3\")\n");
   ASSERT_TRUE(rib);
   EXPECT_EQ(rib->wales, 6);
-  EXPECT_EQ(rib->courses, 4);
+  EXPECT_EQ(rib->courses, 2);
+  const auto moss = repeat_of("cast_on(16)\nfor _ = 1, 6 do rows(2, \"k1, p1\") rows(2, \"p1, k1\") end\n");
+  ASSERT_TRUE(moss);
+  EXPECT_EQ(moss->wales, 4);    // two wales, twice
+  EXPECT_EQ(moss->courses, 4);  // its repeat of four rows, once
   EXPECT_FALSE(repeat_of("cast_on(6)\nrows(12, \"k\")\n")) << "no room for a tile inside the edges";
   EXPECT_FALSE(repeat_of("cast_on(12)\nrows(4, \"k\")\nrows(4, \"p\")\nrows(4, \"k1, p1\")\n")) << "bands, not a repeat";
   EXPECT_FALSE(relax::find_repeat(layout::lay_out(at_paper_gauge("half_cardigan")))) << "tucks relax whole";

@@ -140,8 +140,8 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   }
   if (p == 0 || q == 0) return std::nullopt;
   Repeat r;
-  r.wales = p * ((least_tile + p - 1) / p);
-  r.courses = q * ((least_tile + q - 1) / q);
+  r.wales = p * ((least_tile_wales + p - 1) / p);
+  r.courses = q * ((least_tile_courses + q - 1) / q);
   r.wale_period = p;
   r.course_period = q;
   // The block: the first (up, then across) that repeats exactly with a period round it.

@@ -22,9 +22,14 @@ struct Repeat {
   int wale_period = 0, course_period = 0;  // the smallest repeat, of which the block is whole times
 };
 
-// The tile's least size, in loops each way: a repeat smaller than this is taken as many
-// times as it needs (the periodic contacts wrap one repeat each way).
-inline constexpr int least_tile = 4;
+// The tile's least size, in wales and courses: a repeat smaller than this is taken as many
+// times as it needs. The periodic contacts wrap one repeat each way, so a tile of two
+// courses reaches the loops two courses up and down, past any a loop touches. Four wales,
+// because a tile settles by its points' mean move, which a narrower tile's creeping width
+// makes smaller: a 1x1 rib's tile of 2 wales stops at 2.9 mm a wale where one of 4 draws
+// in on (docs/relaxation.md).
+inline constexpr int least_tile_wales = 4;
+inline constexpr int least_tile_courses = 2;
 // Courses at most this many at either end of the interior that do not repeat are left out
 // of it (relaxed with the edges): a machine program's cast-on and bind-off take a few.
 inline constexpr int most_trimmed = 4;
@@ -40,10 +45,12 @@ inline constexpr int edge_band = 3;
 inline constexpr double deeper_by_tiling = 0.1;
 inline constexpr int morph_sweeps = 30;
 
-// The tile (a whole number of the smallest repeat, at least least_tile loops each way) of
-// a layout's interior (its loops but the first and last two courses and needle positions,
-// and up to most_trimmed more courses at either end that do not repeat), if it has one, it fits in the interior, and it has at most half the
-// fabric's loops; none for a fabric with tucks. Linear in the fabric for each repeat size tried (at most 64 each way).
+// The tile (a whole number of the smallest repeat, at least least_tile_wales by
+// least_tile_courses loops) of a layout's interior (its loops but the first and last two
+// courses and needle positions, and up to most_trimmed more courses at either end that do
+// not repeat), if it has one, it fits in the interior, and it has at most half the
+// fabric's loops; none for a fabric with tucks. Linear in the fabric for each repeat size
+// tried (at most 64 each way).
 std::optional<Repeat> find_repeat(const layout::Layout& layout);
 
 // Points either side of a period of a course's yarn kept as its images in the periods
