@@ -5,6 +5,7 @@
 // depend on the path taken.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -71,6 +72,37 @@ TEST(Columns, EntriesSpreadOverManyColumnsKeepOneOrder) {
   }
   for (int k = 0; k < 50; ++k) added.push_back({{12, -7, z(rng)}, item++});
   expect_one_order(added);
+}
+
+// The mask holds exactly the columns within one of a chosen point's, whatever the points
+// not chosen span (far off here: their extent's columns would be too many to list, and
+// the mask would hold every column); none when none is chosen, all when all are.
+TEST(Columns, AMaskHoldsTheColumnsBesideTheChosenPointsOnly) {
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<int> xy(-10, 10), far(-100000, 100000);
+  std::vector<glm::i64vec3> cells;
+  std::vector<char> chosen;
+  for (int k = 0; k < 400; ++k) {
+    const bool pick = k % 10 == 0;
+    cells.emplace_back(pick ? xy(rng) : far(rng), pick ? xy(rng) : far(rng), 0);
+    chosen.push_back(pick ? 1 : 0);
+  }
+  auto cell = [&](std::size_t i) { return cells[i]; };
+  const spatial::ColumnMask mask(cells.size(), cell, [&](std::size_t i) { return chosen[i] != 0; });
+  for (int x = -15; x <= 15; ++x)
+    for (int y = -15; y <= 15; ++y) {
+      bool beside = false;
+      for (std::size_t i = 0; i < cells.size(); ++i)
+        beside = beside || (chosen[i] && std::abs(cells[i].x - x) <= 1 && std::abs(cells[i].y - y) <= 1);
+      ASSERT_EQ(mask.holds({x, y, 0}), beside) << x << ", " << y;
+    }
+  EXPECT_FALSE(mask.holds({100000, 100000, 0}));
+  const spatial::ColumnMask none(cells.size(), cell, [](std::size_t) { return false; });
+  EXPECT_FALSE(none.holds(cells[1]));
+  EXPECT_FALSE(none.holds({0, 0, 0}));
+  const spatial::ColumnMask all(cells.size(), cell, [](std::size_t) { return true; });
+  EXPECT_TRUE(all.holds(cells[1]));
+  EXPECT_TRUE(all.holds({5000000, -5000000, 0}));
 }
 
 }  // namespace

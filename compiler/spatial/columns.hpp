@@ -217,14 +217,21 @@ class ColumnMask {
   // n points, the i-th at cell(i) (a Columns cell), chosen(i) or not.
   template <class Cell, class Chosen>
   ColumnMask(std::size_t n, Cell&& cell, Chosen&& chosen) {
+    // The extent of the chosen points' cells only (a column past it holds none of them):
+    // a tiled garment chooses a tenth of its points, and the cells cost the time here.
     std::size_t picked = 0;
     std::int64_t xl = INT64_MAX, xh = INT64_MIN, yl = INT64_MAX, yh = INT64_MIN;
     for (std::size_t i = 0; i < n; ++i) {
+      if (!chosen(i)) continue;
       const glm::i64vec3 c = cell(i);
       xl = std::min(xl, c.x), xh = std::max(xh, c.x), yl = std::min(yl, c.y), yh = std::max(yh, c.y);
-      picked += chosen(i) ? 1 : 0;
+      ++picked;
     }
     if (picked == n) return;
+    if (picked == 0) {  // no column
+      in_.assign(1, 0);
+      return;
+    }
     const double columns = (static_cast<double>(xh - xl) + 3.0) * (static_cast<double>(yh - yl) + 3.0);
     if (columns > 4.0 * static_cast<double>(n) + 4096.0) return;
     x0_ = xl - 1, y0_ = yl - 1, nx_ = xh - xl + 3, ny_ = yh - yl + 3;
