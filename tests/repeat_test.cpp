@@ -18,6 +18,8 @@
 #include "relax/relax.hpp"
 #include "relax/repeat.hpp"
 #include "relax/strips.hpp"
+#include "relax/tile.hpp"
+#include "relax/tube.hpp"
 #include "relax_support.hpp"
 #include "support.hpp"
 
@@ -118,6 +120,60 @@ TEST(Repeat, IsFoundWhereTheInteriorMostlyRepeats) {
   EXPECT_EQ(measure::passed_through(f.crossings), 0u);
   EXPECT_FALSE(relax::find_repeat(layout_of("cast_on(12)\nrows(4, \"k\")\nrows(4, \"p\")\nrows(4, \"k1, p1\")\nrows(4, \"k\")\n")))
       << "bands, each a quarter of it: no repeat";
+}
+
+// Past a break in a mostly repeating interior the repeat runs on shifted: CMU's image tube
+// (its two layers' knit/purl diagonals a stitch apart where they meet) in small. Each
+// loop is tiled at the one shift its neighbours agree on, so both halves are tiled. (A
+// diagonal's loop alone fits several of the tile's places: at the first of them, as
+// before, the loops of the shifted half took places that were not neighbours, and none
+// of that half was tiled.)
+TEST(Repeat, ARepeatRunningOnShiftedIsTiledAtTheShiftItsNeighboursAgreeOn) {
+  std::string source =
+      "pattern { gauge = { loop_width = 4.0, loop_height = 4.2, thickness = 2.0 }, yarns = { A = { diameter = 1.0 } }, "
+      "knitting = \"round\" }\ncast_on(96)\n";
+  for (int r = 0; r < 36; ++r) {
+    std::string row;
+    for (int w = 0; w < 96; ++w) {
+      const int m = ((w - r + (w >= 48 ? 1 : 0)) % 4 + 4) % 4;
+      row += std::string(w > 0 ? ", " : "") + (m < 2 ? "k1" : "p1");
+    }
+    source += "row \"" + row + "\"\n";
+  }
+  const Pattern pattern = runtime::run_pattern(source, "halves.lua").pattern;
+  const layout::Layout layout = layout::lay_out(pattern);
+  const auto repeat = relax::find_repeat(layout);
+  ASSERT_TRUE(repeat);
+  EXPECT_EQ(repeat->wale_period, 4);
+  EXPECT_EQ(repeat->course_period, 4);
+  ASSERT_LT(repeat->wale0, 40) << "the block is on the first half";
+  const auto chains = relax::refine(yarn_paths::trace(layout, yarn_paths::LoopModel::smooth), test::cores(pattern), relax::Options{}.spacing);
+  const relax::Unrolled flat = relax::unroll(layout, chains);
+  const relax::LoopGrid g = relax::grid_of(layout);
+  const auto cut = relax::cut_tile(layout, g, flat.pieces, *repeat);
+  ASSERT_TRUE(cut);
+  relax::Relaxed as_cut;  // the moves are the tile's whatever it is: unrelaxed, none
+  as_cut.pieces = cut->pieces;
+  relax::Moves moves = relax::unmoved(flat.pieces, layout.loops.size());
+  relax::tile_moves(layout, g, flat.pieces, *repeat, *cut, as_cut, relax::LatticeStretch{glm::dvec3(0.0), glm::dvec2(1.0)}, moves);
+  // Clear of the rounds' ends, the seam and where the halves meet, every loop is tiled.
+  int first = 0, second = 0, untiled = 0;
+  for (std::size_t l = 0; l < layout.loops.size(); ++l) {
+    const auto& loop = layout.loops[l];
+    if (loop.course < 8 || loop.course > 28) continue;
+    const bool in_first = loop.wale >= 6 && loop.wale <= 41, in_second = loop.wale >= 54 && loop.wale <= 89;
+    if (!in_first && !in_second) continue;
+    if (!moves.loop_tiled[l]) ++untiled;
+    else ++(in_first ? first : second);
+  }
+  EXPECT_EQ(untiled, 0);
+  EXPECT_EQ(first, 21 * 36);
+  EXPECT_EQ(second, 21 * 36);
+  // Where the halves meet (wales 47 and 48), no place fits both neighbourhoods.
+  for (std::size_t l = 0; l < layout.loops.size(); ++l) {
+    const auto& loop = layout.loops[l];
+    if (loop.course >= 8 && loop.course <= 28 && (loop.wale == 47 || loop.wale == 48)) EXPECT_FALSE(moves.loop_tiled[l]) << loop.wale;
+  }
 }
 
 // Relaxed by its repeat, a swatch's tiled interior is held and its edges relaxed

@@ -19,8 +19,6 @@
 
 namespace knitc::relax {
 
-namespace {
-
 LoopGrid grid_of(const layout::Layout& layout) {
   LoopGrid g{layout.courses, layout.wales, {}, {}};
   if (layout.knitting == Knitting::round) g.round_needles = layout.needle;
@@ -33,6 +31,8 @@ LoopGrid grid_of(const layout::Layout& layout) {
   }
   return g;
 }
+
+namespace {
 
 struct Interior {
   int course_from, course_to, wale_from, wale_to;  // inclusive
@@ -313,19 +313,29 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   Crop part = crop(chains, start, needed_after);
   part.needed = std::move(needed);
   if (deeper_than_laid(layout, part.pieces, sizes, part.start, options.threads)) {
-    // A tube is relaxed whole: carried, it keeps no crossing's side (the sweeps' memory
-    // of them is flat work's), and it is not relaxed again where a yarn passed through
-    // another (compile.cpp). So is flat work whose edges are half of it or more: carried there,
-    // its edges would cost about what the whole does, and where the carried yarn passes
+    // Flat work whose edges are half of it or more is relaxed whole: carried there, its
+    // edges would cost about what the whole does, and where the carried yarn passes
     // through another (the compile's crossings check) it is relaxed whole after all.
     // Else it is carried to the tile's places over sweeps, from the fabric as laid,
-    // stretched as the tile was.
-    if (round || 2 * part.start.pos.size() > start.pos.size()) return std::nullopt;
+    // stretched as the tile was. So is a tube, whose sweeps keep no crossing's side (the
+    // memory is flat work's) and which is not relaxed again where a yarn passed through
+    // another (compile.cpp): what its crossings check finds is said. (CMU's image tube,
+    // carried, passes none through; relaxed whole it took twice as long and did not settle.)
+    if (2 * part.start.pos.size() > start.pos.size()) return std::nullopt;
     part.start.from.reserve(part.start.pos.size());
     for (std::size_t r = 0; r < part.pieces.size(); ++r) {
       const auto [piece, first] = part.origin[r];
       for (std::size_t k = 0; k < part.pieces[r].data_points.size(); ++k) {
-        part.start.from.push_back(stretched(chains[piece].data_points[first + k]));
+        const glm::dvec3& laid = flat[piece].data_points[first + k];
+        if (!round) {
+          part.start.from.push_back(stretched(laid));
+          continue;
+        }
+        // Round a tube, laid flat, stretched, and rolled onto the stretched tube, as the
+        // tiled start's points are.
+        const double c = unrolled.circumference[piece][first + k];
+        part.start.from.push_back(c > 0.0 ? layout::roll(stretched(laid), c * stretch.x, layout.course_spacing * stretch.y)
+                                          : chains[piece].data_points[first + k]);
       }
     }
     part.start.morph_sweeps = morph_sweeps;

@@ -40,8 +40,8 @@ inline constexpr double most_not_repeating = 0.1;
 // the edges' relaxation; the rest are held where the tile put them.
 inline constexpr int edge_band = 3;
 // Tiled, the yarn may start this many core diameters deeper into another than the layout
-// put it, at most; else flat work is carried to the tile's places over morph_sweeps
-// sweeps (Start::from), and a tube is relaxed whole (see relax_by_repeat).
+// put it, at most; else the yarn is carried to the tile's places over morph_sweeps
+// sweeps (Start::from), where the edges are under half the fabric (see relax_by_repeat).
 inline constexpr double deeper_by_tiling = 0.1;
 inline constexpr int morph_sweeps = 30;
 

@@ -47,6 +47,9 @@ struct LoopGrid {
   }
 };
 
+// The layout's loops by course and wale (a tube's running on past each round's start).
+LoopGrid grid_of(const layout::Layout& layout);
+
 struct Strips {
   int relaxed = 0;         // strips relaxed and copied (0 to 4)
   int iterations = 0;      // the most sweeps one took

@@ -172,19 +172,49 @@ void tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vect
     const int dc = loop.course - repeat.course0, dw = loop.wale - repeat.wale0;
     return glm::ivec2(in_period(dw, repeat.wales), in_period(dc, repeat.courses));
   };
-  // Each loop's place in the tile: its place on the lattice where it is laid out as the
-  // tile's loop there, else the first place that it is (past a break in a mostly
-  // repeating interior, its repeat runs on shifted); none if no place is.
+  // Each loop's place in the tile: its place on the lattice where it and its neighbours
+  // two loops round are laid out as their tile loops there. Past a break in a mostly
+  // repeating interior the repeat runs on shifted, by one shift for the whole run: there,
+  // the lattice place moved by the least shift (up, then across) at which the loop and
+  // its neighbours are (one that fits the loop alone may not fit them: a diagonal's loops
+  // each fit several places). Else, as before any shift was looked for, the lattice place
+  // if the loop alone is laid out as its loop, or the first place that is; none if none is.
   std::vector<std::uint8_t> as_tiled(layout.loops.size(), 0);
   std::vector<glm::ivec2> place_of(layout.loops.size(), glm::ivec2(0));
   auto laid_as = [&](const layout::Loop& loop, std::size_t l, glm::ivec2 t) {
     return repeats(layout, g(repeat.course0 + t.y, repeat.wale0 + t.x), static_cast<long>(l), loop.wale - (repeat.wale0 + t.x),
                    loop.course - (repeat.course0 + t.y));
   };
+  auto shifted = [&](const layout::Loop& loop, glm::ivec2 shift) {
+    const glm::ivec2 t = tile_place(loop) + shift;
+    return glm::ivec2(in_period(t.x, repeat.wales), in_period(t.y, repeat.courses));
+  };
+  std::vector<std::uint8_t> on_lattice(layout.loops.size(), 0);
+  for (std::size_t l = 0; l < layout.loops.size(); ++l) on_lattice[l] = laid_as(layout.loops[l], l, tile_place(layout.loops[l]));
+  auto fits_round = [&](const layout::Loop& loop, glm::ivec2 shift) {
+    for (int u = -2; u <= 2; ++u)
+      for (int v = -2; v <= 2; ++v) {
+        const long other = g(loop.course + u, loop.wale + v);
+        if (other < 0) return false;
+        const auto o = static_cast<std::size_t>(other);
+        if (shift == glm::ivec2(0) ? !on_lattice[o] : !laid_as(layout.loops[o], o, shifted(layout.loops[o], shift))) return false;
+      }
+    return true;
+  };
   for (std::size_t l = 0; l < layout.loops.size(); ++l) {
     const auto& loop = layout.loops[l];
     place_of[l] = tile_place(loop);
-    as_tiled[l] = laid_as(loop, l, place_of[l]);
+    as_tiled[l] = on_lattice[l];
+    if (on_lattice[l] && fits_round(loop, glm::ivec2(0))) continue;
+    bool found = false;
+    for (int y = 0; !found && y < repeat.courses; ++y)
+      for (int x = 0; !found && x < repeat.wales; ++x) {
+        const glm::ivec2 shift(x, y);
+        if (shift == glm::ivec2(0) || !laid_as(loop, l, shifted(loop, shift)) || !fits_round(loop, shift)) continue;
+        place_of[l] = shifted(loop, shift);
+        as_tiled[l] = 1;
+        found = true;
+      }
     for (int y = 0; !as_tiled[l] && y < repeat.courses; ++y)
       for (int x = 0; !as_tiled[l] && x < repeat.wales; ++x)
         if (laid_as(loop, l, glm::ivec2(x, y))) {
