@@ -286,6 +286,67 @@ TEST(Crossings, OnlyTheCountedAreCountedButAllMatch) {
   EXPECT_EQ(measure::compare(x, x, 2, 0, 0.0, {}, {0, 0}, {1, 0}).kept, 1u);
 }
 
+// A few segments far longer than the rest (a machine-knit hat's 2.4 mm against a mean of
+// 0.33) no longer size the contact grid's cell: the cell allows for twice the mean and
+// the long ones search as far as they reach. Every pair is still found: the deepest
+// overlap and the mean squeeze of the listed pairs are those of every pair, counted one
+// by one. Short yarns in three layers; two long ones across them, one through the
+// middle layer's yarns near its ends, far from its midpoint.
+TEST(Relax, LongSegmentsAmongShortOnesFindEveryPair) {
+  relax::Chains c;
+  auto add_piece = [&](const std::vector<glm::dvec3>& points) {
+    const std::size_t first = c.pos.size();
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      c.pos.push_back(points[k]);
+      c.along.push_back(k == 0 ? 0.0 : c.along.back() + glm::distance(points[k - 1], points[k]));
+      c.piece.push_back(static_cast<std::uint32_t>(c.first.size()));
+      const bool last = k + 1 == points.size();
+      c.segment.push_back(last ? 0 : 1);
+      c.contactable.push_back(last ? 0 : 1);
+      c.rest_length.push_back(last ? 0.0 : glm::distance(points[k], points[k + 1]));
+    }
+    c.first.push_back(first);
+    c.along_period.push_back(0.0);
+  };
+  for (int layer = 0; layer < 3; ++layer)
+    for (int row = 0; row < 12; ++row) {
+      std::vector<glm::dvec3> yarn;
+      for (int k = 0; k <= 40; ++k) yarn.push_back({0.3 * k, 0.31 * row + 0.05 * layer, 0.17 * (layer - 1) + 0.01 * std::sin(k + row)});
+      add_piece(yarn);
+    }
+  add_piece({{-0.5, 0.2, 0.02}, {2.6, 1.9, -0.03}, {5.7, 3.2, 0.04}, {8.8, 0.1, 0.0}});
+  add_piece({{1.0, 3.6, 0.15}, {4.1, 0.05, -0.1}, {7.0, 3.5, 0.12}});
+  c.first.push_back(c.pos.size());
+  const std::size_t n = c.pos.size();
+  c.rest = c.pos;
+  c.radius.assign(n, 0.05);
+  c.shell.assign(n, 0.1);
+  c.inv_mass.assign(n, 1.0);
+  c.on_loop.assign(n, 1);
+  c.thickest = 0.2;
+  c.thickest_core = 0.1;
+  relax::Contacts contacts(glm::dvec2(0.0), relax::contact_margin * c.thickest, false, 2);
+  contacts.find(c);
+  double deepest = 0.0, squeeze = 0.0;
+  std::size_t pressed = 0;
+  for (std::size_t a = 0; a + 1 < n; ++a)
+    for (std::size_t b = a + 1; b + 1 < n; ++b) {
+      if (!c.contactable[a] || !c.contactable[b] || c.piece[a] == c.piece[b]) continue;
+      double s, t;
+      relax::closest_points(c.pos[a], c.pos[a + 1], c.pos[b], c.pos[b + 1], s, t);
+      const double dist = glm::distance(glm::mix(c.pos[a], c.pos[a + 1], s), glm::mix(c.pos[b], c.pos[b + 1], t));
+      deepest = std::max(deepest, 0.1 - dist);
+      if (dist < 0.2) {
+        squeeze += 1.0 - std::max(0.0, dist - 0.1) / 0.1;
+        ++pressed;
+      }
+    }
+  ASSERT_GT(pressed, 100u);
+  EXPECT_GT(deepest, 0.05) << "the long yarns pass through the layers";
+  EXPECT_NEAR(contacts.deepest(c), deepest, 1e-6);  // (a pair's reach is kept as a float)
+  EXPECT_NEAR(contacts.compression(c), squeeze / static_cast<double>(pressed), 1e-6);
+}
+
 // Two segments of one yarn that share a point are never a contact, however long: no push
 // can part them, and listed, their overlap of a whole core diameter kept the sweeps from
 // settling (KnitScript's cable swatch, where the curve through two close data points

@@ -72,13 +72,18 @@ class Columns {
   // is within one of the cell's, each column in its order: the same sequence every time.
   template <class Visit>
   void near(const glm::i64vec3& cell, Visit&& visit) const {
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy) {
+    near(cell, 1, visit);
+  }
+  // The same for the (2 reach + 1)^2 columns around `cell` and z within `reach` (>= 0) of its.
+  template <class Visit>
+  void near(const glm::i64vec3& cell, int reach, Visit&& visit) const {
+    for (int dx = -reach; dx <= reach; ++dx)
+      for (int dy = -reach; dy <= reach; ++dy) {
         const auto [first, last] = column(cell.x + dx, cell.y + dy);
         for (std::size_t e = first; e < last; ++e) {
           const Entry& entry = entries_[e];
-          if (entry.z < cell.z - 1) continue;
-          if (entry.z > cell.z + 1) break;
+          if (entry.z < cell.z - reach) continue;
+          if (entry.z > cell.z + reach) break;
           visit(entry);
         }
       }
