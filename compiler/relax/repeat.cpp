@@ -320,7 +320,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
     // stretched as the tile was. So is a tube, whose sweeps keep no crossing's side (the
     // memory is flat work's) and which is not relaxed again where a yarn passed through
     // another (compile.cpp): what its crossings check finds is said. (CMU's image tube,
-    // carried, passes none through; relaxed whole it took twice as long and did not settle.)
+    // carried, passes none through; relaxed whole it took twice as long.)
     if (2 * part.start.pos.size() > start.pos.size()) return std::nullopt;
     part.start.from.reserve(part.start.pos.size());
     for (std::size_t r = 0; r < part.pieces.size(); ++r) {
