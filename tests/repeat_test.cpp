@@ -172,7 +172,9 @@ TEST(Repeat, ARepeatRunningOnShiftedIsTiledAtTheShiftItsNeighboursAgreeOn) {
   // Where the halves meet (wales 47 and 48), no place fits both neighbourhoods.
   for (std::size_t l = 0; l < layout.loops.size(); ++l) {
     const auto& loop = layout.loops[l];
-    if (loop.course >= 8 && loop.course <= 28 && (loop.wale == 47 || loop.wale == 48)) EXPECT_FALSE(moves.loop_tiled[l]) << loop.wale;
+    if (loop.course >= 8 && loop.course <= 28 && (loop.wale == 47 || loop.wale == 48)) {
+      EXPECT_FALSE(moves.loop_tiled[l]) << loop.wale;
+    }
   }
 }
 
