@@ -155,7 +155,8 @@ TEST(Repeat, ARepeatRunningOnShiftedIsTiledAtTheShiftItsNeighboursAgreeOn) {
   relax::Relaxed as_cut;  // the moves are the tile's whatever it is: unrelaxed, none
   as_cut.pieces = cut->pieces;
   relax::Moves moves = relax::unmoved(flat.pieces, layout.loops.size());
-  relax::tile_moves(layout, g, flat.pieces, *repeat, *cut, as_cut, relax::LatticeStretch{glm::dvec3(0.0), glm::dvec2(1.0)}, moves);
+  relax::tile_places(layout, g, flat.pieces, *repeat, *cut, moves);
+  relax::tile_moves(*cut, as_cut, relax::LatticeStretch{glm::dvec3(0.0), glm::dvec2(1.0)}, moves);
   // Clear of the rounds' ends, the seam and where the halves meet, every loop is tiled.
   int first = 0, second = 0, untiled = 0;
   for (std::size_t l = 0; l < layout.loops.size(); ++l) {

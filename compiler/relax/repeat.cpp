@@ -181,7 +181,8 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   // sweep: one thread relaxes it (the same result on any number).
   tile_options.threads = 1;
   // Beside the tile's relaxation (one thread), what the fabric needs made whatever the
-  // tile comes to: every point's moves, none yet, and its place along its yarn.
+  // tile comes to: every point's moves, none yet, which loops are tiled as which tile
+  // loops (from the tile as cut), and each point's place along its yarn.
   Relaxed relaxed_tile;
   Moves moves;
   AlongYarn places;
@@ -190,6 +191,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
       relaxed_tile = relax_chains(tile, tile_pieces, sizes, tile_options, &links);
     } else {
       moves = unmoved(flat, layout.loops.size());
+      tile_places(layout, g, flat, repeat, *cut, moves);
       places = along_yarn(chains, sizes);
     }
   });
@@ -208,7 +210,7 @@ std::optional<Relaxed> relax_by_repeat(const layout::Layout& layout, const std::
   const LatticeStretch affine{origin, stretch};
   auto stretched = [&](const glm::dvec3& p) { return p + affine(p); };  // a laid point, the fabric stretched as the tile was
 
-  tile_moves(layout, g, flat, repeat, *cut, relaxed_tile, affine, moves);
+  tile_moves(*cut, relaxed_tile, affine, moves);
   std::vector<std::vector<glm::dvec3>>& local = moves.local;
   const std::vector<std::vector<std::uint8_t>>& tiled = moves.tiled;
   const std::vector<std::vector<std::uint32_t>>& tile_point = moves.tile_point;

@@ -154,14 +154,13 @@ Moves unmoved(const std::vector<yarn_paths::Piece>& chains, std::size_t loops) {
   return out;
 }
 
-void tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vector<yarn_paths::Piece>& chains, const Repeat& repeat,
-                const Tile& cut, const Relaxed& relaxed_tile, const LatticeStretch& affine, Moves& out) {
-  auto& local = out.local;
+void tile_places(const layout::Layout& layout, const LoopGrid& g, const std::vector<yarn_paths::Piece>& chains, const Repeat& repeat,
+                 const Tile& cut, Moves& out) {
   auto& tiled = out.tiled;
   auto& tile_point = out.tile_point;
   auto& tile_first = out.tile_first;
   auto& loop_tiled = out.loop_tiled;
-  assert(local.size() == chains.size() && loop_tiled.size() == layout.loops.size());
+  assert(tiled.size() == chains.size() && loop_tiled.size() == layout.loops.size());
   const std::vector<yarn_paths::Piece>& tile_pieces = cut.pieces;
   const std::vector<long>& tile_loop = cut.tile_loop;
   tile_first.assign(tile_pieces.size() + 1, 0);
@@ -249,7 +248,6 @@ void tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vect
     const auto [tp, tj] = cut.where_in_tile[t];
     const auto& fabric_piece = chains[static_cast<std::size_t>(pi)];
     const auto& rest_run = tile_pieces[tp];
-    const auto& relaxed_run = relaxed_tile.pieces[tp];
     const auto J = static_cast<std::size_t>(pj);
     const std::size_t f = fabric_piece.loop_first[J], tf = rest_run.loop_first[tj];
     if (rest_run.loop_last[tj] - tf != fabric_piece.loop_last[J] - f) continue;
@@ -280,14 +278,27 @@ void tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vect
         fabric_piece.loop_first[J + 1] - f == tile_next - tf && alike(n + 1, tile_next - tf - 1, 1e-3))
       n = tile_next - tf - 1;
     for (std::size_t k = 0; k <= n; ++k) {
-      const glm::dvec3& at = rest_run.data_points[tf + k];
-      local[static_cast<std::size_t>(pi)][f + k] = relaxed_run.data_points[tf + k] - at - affine(at);
       tiled[static_cast<std::size_t>(pi)][f + k] = 1;
       tile_point[static_cast<std::size_t>(pi)][f + k] = tile_first[tp] + static_cast<std::uint32_t>(tf + k);
     }
+    out.spans.push_back({static_cast<std::uint32_t>(pi), static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(n + 1),
+                         static_cast<std::uint32_t>(tp), static_cast<std::uint32_t>(tf)});
     loop_tiled[l] = 1;
   }
-  for (std::size_t i = 0; i < chains.size(); ++i) {
+}
+
+void tile_moves(const Tile& cut, const Relaxed& relaxed_tile, const LatticeStretch& affine, Moves& out) {
+  auto& local = out.local;
+  const auto& tiled = out.tiled;
+  for (const Moves::Span& s : out.spans) {
+    const auto& rest_run = cut.pieces[s.run];
+    const auto& relaxed_run = relaxed_tile.pieces[s.run];
+    for (std::size_t k = 0; k < s.count; ++k) {
+      const glm::dvec3& at = rest_run.data_points[s.run_first + k];
+      local[s.piece][s.first + k] = relaxed_run.data_points[s.run_first + k] - at - affine(at);
+    }
+  }
+  for (std::size_t i = 0; i < local.size(); ++i) {
     auto& move = local[i];
     const auto& mark = tiled[i];
     long last = -1;

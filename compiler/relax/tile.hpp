@@ -57,20 +57,30 @@ struct LatticeStretch {
 // tile loop's, where it and its neighbours two loops round are laid out as their tile
 // loops; the others' are blended along their yarn between the nearest tiled points.
 struct Moves {
+  // A tiled loop's points, [first, first + count) of its piece, and their tile points,
+  // from run_first of the tile's piece `run` on.
+  struct Span {
+    std::uint32_t piece, first, count, run, run_first;
+  };
   std::vector<std::vector<glm::dvec3>> local;         // per piece and point
   std::vector<std::vector<std::uint8_t>> tiled;       // per piece and point: moved as its tile point
   std::vector<std::vector<std::uint32_t>> tile_point; // per tiled point, its tile point (the tile's pieces' points in order), else no_tile_point
   std::vector<std::uint32_t> tile_first;              // per tile piece, its first point there; then the end
   std::vector<std::uint8_t> loop_tiled;               // per loop
+  std::vector<Span> spans;                            // per tiled loop, in the loops' order
 };
 inline constexpr std::uint32_t no_tile_point = UINT32_MAX;
 
 // The arrays of Moves for `chains` and `loops` loops, every point unmoved and untiled:
 // made apart from tile_moves, so that they can be while the tile relaxes.
 Moves unmoved(const std::vector<yarn_paths::Piece>& chains, std::size_t loops);
-// Fills `out`, as unmoved(chains, layout.loops.size()) made it.
-void tile_moves(const layout::Layout& layout, const LoopGrid& g, const std::vector<yarn_paths::Piece>& chains, const Repeat& repeat,
-                const Tile& cut, const Relaxed& relaxed_tile, const LatticeStretch& affine, Moves& out);
+// Which loops are tiled, and as which tile loops: all of `out` but its moves (`local`),
+// made as unmoved(chains, layout.loops.size()) made it. Reads the tile as cut, not as
+// relaxed, so it can be made while the tile relaxes.
+void tile_places(const layout::Layout& layout, const LoopGrid& g, const std::vector<yarn_paths::Piece>& chains, const Repeat& repeat,
+                 const Tile& cut, Moves& out);
+// Then every point's move, from the relaxed tile: `relaxed_tile` has cut's pieces' points.
+void tile_moves(const Tile& cut, const Relaxed& relaxed_tile, const LatticeStretch& affine, Moves& out);
 
 // Per loop of the layout: whether the tiled start holds it (tiled, with nothing untiled
 // within edge_band loops either way), and how many loops, across or up, the nearest loop
