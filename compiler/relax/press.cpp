@@ -135,20 +135,30 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
   // An ellipse is the same turned half a turn: each piece's directions turned to agree
   // with the last pressed one before it, then smoothed along the piece (twice by 1/4,
   // 1/2, 1/4, the ends repeated) and made across the yarn again.
+  // A copy's direction, so turned, is its first copy's or that turned half a turn
+  // (turn: +1 or -1; 2 where both are 0, either way; 0 at a point of its own).
+  std::vector<std::int8_t> turn(same_as.empty() ? 0 : n, 0);
   for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
     glm::dvec3 last(0.0);
     auto& v = pieces[piece].pressed;
-    for (auto& d : v) {
-      if (glm::dot(d, d) == 0.0) continue;
-      if (glm::dot(d, last) < 0.0) d = -d;
-      last = d;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      glm::dvec3& d = v[k];
+      if (glm::dot(d, d) != 0.0) {
+        if (glm::dot(d, last) < 0.0) d = -d;
+        last = d;
+      }
+      const std::size_t i = p.first[piece] + k;
+      if (!own(i)) {
+        const glm::dvec3& first = pressed(same_as[i]);  // before i: turned already
+        turn[i] = glm::dot(d, d) == 0.0 ? 2 : d == first ? 1 : d == -first ? -1 : 0;
+      }
     }
   }
-  // The two passes in one, in place: each point's second pass reads its neighbours' first,
-  // made where they are needed (the same sums, in the same order, as two arrays gave),
-  // from the directions as they were before the pass. A block keeps the two it has
-  // overwritten last; the two either side of it, which its neighbours overwrite, are
-  // kept before the blocks start.
+  // The two passes by blocks: each block reads the directions as they were before the
+  // passes (its own into a buffer, the two either side of it kept before the blocks
+  // start, since its neighbours overwrite them), makes the first pass over its points
+  // and one either side, then the second, and writes its own points. The same sums, in
+  // the same order, as two passes over two whole arrays.
   constexpr std::size_t block = 16384, halo = 2;
   const std::size_t blocks = (n + block - 1) / block;
   std::vector<glm::dvec3> edges(blocks * 2 * halo);
@@ -158,36 +168,62 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
       if (lo >= halo - h) edges[(b * 2) * halo + h] = pressed(lo - (halo - h));
       if (hi + h < n) edges[(b * 2 + 1) * halo + h] = pressed(hi + h);
     }
+  // A copy whose two neighbours either side are copies of its first copy's, all turned
+  // alike, comes out of the passes as its first copy does, turned as they are: taken
+  // from it after the passes (derived: that turn; 0 where made here). Most of a tiled
+  // garment's points.
+  std::vector<std::int8_t> derived(n, 0);
+  auto derived_turn = [&](std::size_t i, std::size_t from, std::size_t to) -> std::int8_t {
+    if (same_as.empty() || own(i) || i < from + halo || i + halo >= to) return 0;
+    const std::size_t f = same_as[i], piece = p.piece[f];
+    if (f < p.first[piece] + halo || f + halo >= p.first[piece + 1]) return 0;
+    std::int8_t sign = 2;
+    for (std::size_t k = i - halo; k <= i + halo; ++k) {
+      if (same_as[k] != f + k - i || turn[k] == 0) return 0;
+      if (turn[k] == 2) continue;
+      if (sign != 2 && sign != turn[k]) return 0;
+      sign = turn[k];
+    }
+    return sign == 2 ? 1 : sign;
+  };
   parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
     const std::size_t lo = b * block, hi = std::min(n, lo + block);
-    glm::dvec3 last[halo];  // the directions before the pass at i - 2 and i - 1
-    std::size_t i = lo;
-    auto before_pass = [&](std::size_t j) -> const glm::dvec3& {
-      if (j < lo) return edges[(b * 2) * halo + (j + halo - lo)];
-      if (j >= hi) return edges[(b * 2 + 1) * halo + (j - hi)];
-      if (j < i) return last[j + halo - i];
-      return pressed(j);
-    };
+    // before[k - lo + halo]: the direction before the passes at k, for k in [lo - 2, hi + 2)
+    // within the points; once[k - lo + 1]: the first pass at k, for k in [lo - 1, hi + 1).
+    std::vector<glm::dvec3> before(hi - lo + 2 * halo), once(hi - lo + 2);
+    for (std::size_t h = 0; h < halo; ++h) {
+      before[h] = edges[(b * 2) * halo + h];
+      before[hi - lo + halo + h] = edges[(b * 2 + 1) * halo + h];
+    }
+    for (std::size_t k = lo; k < hi; ++k) before[k - lo + halo] = pressed(k);
+    auto at = [&](std::size_t k) -> const glm::dvec3& { return before[k + halo - lo]; };
     // A pass reads its neighbours in the piece, the ends repeated.
-    auto smoothed = [&](std::size_t k) {
-      const std::size_t from = p.first[p.piece[k]], to = p.first[p.piece[k] + 1];
-      const glm::dvec3& a = before_pass(k > from ? k - 1 : k);
-      const glm::dvec3& c = before_pass(k + 1 < to ? k + 1 : k);
-      return 0.25 * a + 0.5 * before_pass(k) + 0.25 * c;
-    };
-    for (; i < hi; ++i) {
-      const std::size_t piece = p.piece[i], from = p.first[piece], to = p.first[piece + 1];
-      const glm::dvec3 before = smoothed(i > from ? i - 1 : i), after = smoothed(i + 1 < to ? i + 1 : i);
-      const glm::dvec3 twice = 0.25 * before + 0.5 * smoothed(i) + 0.25 * after;
+    const std::size_t first = lo > 0 ? lo - 1 : lo, last = std::min(n, hi + 1);
+    std::size_t piece = p.piece[first];
+    for (std::size_t k = first; k < last; ++k) {
+      while (k >= p.first[piece + 1]) ++piece;
+      const std::size_t from = p.first[piece], to = p.first[piece + 1];
+      once[k + 1 - lo] = 0.25 * at(k > from ? k - 1 : k) + 0.5 * at(k) + 0.25 * at(k + 1 < to ? k + 1 : k);
+    }
+    piece = p.piece[lo];
+    for (std::size_t i = lo; i < hi; ++i) {
+      while (i >= p.first[piece + 1]) ++piece;
+      const std::size_t from = p.first[piece], to = p.first[piece + 1];
+      if ((derived[i] = derived_turn(i, from, to)) != 0) continue;
+      const glm::dvec3& a = once[(i > from ? i - 1 : i) + 1 - lo];
+      const glm::dvec3& c = once[(i + 1 < to ? i + 1 : i) + 1 - lo];
+      const glm::dvec3 twice = 0.25 * a + 0.5 * once[i + 1 - lo] + 0.25 * c;
       const glm::dvec3 t = tangent(p, i, from, to);
       const double amount = glm::length(twice);
       glm::dvec3 across = twice - glm::dot(twice, t) * t;
       const double l = glm::length(across);
-      glm::dvec3& out = pressed(i);
-      last[0] = last[1];
-      last[1] = out;
-      out = amount > 1e-9 && l > 1e-9 ? amount * across / l : glm::dvec3(0.0);
+      pressed(i) = amount > 1e-9 && l > 1e-9 ? amount * across / l : glm::dvec3(0.0);
     }
+  });
+  if (same_as.empty()) return;
+  parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
+    for (std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i)
+      if (derived[i] != 0) pressed(i) = static_cast<double>(derived[i]) * pressed(same_as[i]);
   });
 }
 
