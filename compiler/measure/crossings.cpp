@@ -33,22 +33,19 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
                                 const std::vector<std::vector<std::uint8_t>>& looked_at) {
   assert(looked_at.empty() || looked_at.size() == pieces.size());
   auto looked = [&](const Segment& g) { return looked_at.empty() || looked_at[g.piece][g.index] != 0; };
-  std::vector<Segment> segments;
-  double longest = 0.0;
-  std::size_t total = 0;
-  for (const auto& piece : pieces) total += piece.data_points.size();
-  segments.reserve(total);
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    const auto& points = pieces[i].data_points;
-    for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-      segments.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)});
-      longest = std::max(longest, glm::distance(glm::dvec2(points[k]), glm::dvec2(points[k + 1])));
-    }
-  }
   auto p_of = [&](const Segment& g) -> const glm::dvec3& { return pieces[g.piece].data_points[g.index]; };
   auto q_of = [&](const Segment& g) -> const glm::dvec3& { return pieces[g.piece].data_points[g.index + 1]; };
+  // Every segment by one index: piece i's from first[i].
+  std::vector<std::size_t> first(pieces.size() + 1, 0);
+  double longest = 0.0;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const auto& points = pieces[i].data_points;
+    first[i + 1] = first[i] + (points.size() > 1 ? points.size() - 1 : 0);
+    for (std::size_t k = 0; k + 1 < points.size(); ++k)
+      longest = std::max(longest, glm::distance(glm::dvec2(points[k]), glm::dvec2(points[k + 1])));
+  }
   std::vector<Crossing> out;
-  if (segments.empty() || longest <= 0.0) return out;
+  if (first.back() == 0 || longest <= 0.0) return out;
   // Each segment in the columns its box covers, seen from the face (at most four: a cell
   // is as long as the longest); the pairs that share a column are the candidates.
   const double cell = longest;
@@ -57,25 +54,39 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
     const glm::dvec2 lo = glm::min(glm::dvec2(p_of(g)), glm::dvec2(q_of(g))) / cell;
     return glm::i64vec2(static_cast<std::int64_t>(std::floor(lo.x)), static_cast<std::int64_t>(std::floor(lo.y)));
   };
+  // The segment at an index, for indices asked in ascending runs (the mask's passes):
+  // its piece found from the last one's.
+  std::size_t piece_at = 0;
+  auto segment = [&](std::size_t s) {
+    if (s < first[piece_at]) piece_at = 0;
+    while (s >= first[piece_at + 1]) ++piece_at;
+    return Segment{static_cast<std::uint32_t>(piece_at), static_cast<std::uint32_t>(s - first[piece_at])};
+  };
   // A segment not looked at is indexed only where it may share a column with one that is
   // (their boxes' low corners a column apart at most: a box spans two columns at most).
+  // Only the segments indexed are listed (a tiled garment's few): `kept`.
   const spatial::ColumnMask beside_looked(
-      segments.size(), [&](std::size_t s) { return glm::i64vec3(low_cell(segments[s]), 0); },
-      [&](std::size_t s) { return looked(segments[s]); });
-  for (std::size_t s = 0; s < segments.size(); ++s) {
-    if (!looked(segments[s]) && !beside_looked.holds(glm::i64vec3(low_cell(segments[s]), 0))) continue;
-    const glm::dvec2 lo = glm::min(glm::dvec2(p_of(segments[s])), glm::dvec2(q_of(segments[s]))) / cell;
-    const glm::dvec2 hi = glm::max(glm::dvec2(p_of(segments[s])), glm::dvec2(q_of(segments[s]))) / cell;
-    for (auto x = static_cast<std::int64_t>(std::floor(lo.x)); x <= static_cast<std::int64_t>(std::floor(hi.x)); ++x)
-      for (auto y = static_cast<std::int64_t>(std::floor(lo.y)); y <= static_cast<std::int64_t>(std::floor(hi.y)); ++y)
-        grid.add({x, y, 0}, static_cast<std::uint32_t>(s));
-  }
+      first.back(), [&](std::size_t s) { return glm::i64vec3(low_cell(segment(s)), 0); },
+      [&](std::size_t s) { return looked(segment(s)); });
+  std::vector<Segment> kept;
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (std::size_t k = 0; k < first[i + 1] - first[i]; ++k) {
+      const Segment g{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)};
+      if (!looked(g) && !beside_looked.holds(glm::i64vec3(low_cell(g), 0))) continue;
+      const auto s = static_cast<std::uint32_t>(kept.size());
+      kept.push_back(g);
+      const glm::dvec2 lo = glm::min(glm::dvec2(p_of(g)), glm::dvec2(q_of(g))) / cell;
+      const glm::dvec2 hi = glm::max(glm::dvec2(p_of(g)), glm::dvec2(q_of(g))) / cell;
+      for (auto x = static_cast<std::int64_t>(std::floor(lo.x)); x <= static_cast<std::int64_t>(std::floor(hi.x)); ++x)
+        for (auto y = static_cast<std::int64_t>(std::floor(lo.y)); y <= static_cast<std::int64_t>(std::floor(hi.y)); ++y)
+          grid.add({x, y, 0}, s);
+    }
   grid.index();
   // A pair may share several columns: it is tested in the first of them only (the lowest
   // x, then y, the two boxes share), so no list of every pair is kept: on a garment that
   // list was tens of millions of pairs, its sort most of the time and memory here.
   auto test = [&](std::uint32_t i, std::uint32_t j, std::vector<Crossing>& found) {
-    const Segment &a = segments[i], &b = segments[j];
+    const Segment &a = kept[i], &b = kept[j];
     if (!looked(a) && !looked(b)) return;
     if (a.piece == b.piece && (a.index > b.index ? a.index - b.index : b.index - a.index) < near) return;
     const glm::dvec3 &ap = p_of(a), &aq = q_of(a), &bp = p_of(b), &bq = q_of(b);
@@ -107,8 +118,8 @@ std::vector<Crossing> crossings(const std::vector<yarn_paths::Piece>& pieces, st
       for (std::size_t e = 0; e < list.size(); ++e)
         for (std::size_t f = e + 1; f < list.size(); ++f) {
           const std::uint32_t i = std::min(list[e].item, list[f].item), j = std::max(list[e].item, list[f].item);
-          const glm::i64vec2 first = glm::max(low_cell(segments[i]), low_cell(segments[j]));
-          if (spatial::Columns::column_key(first.x, first.y) == here) test(i, j, found[b]);
+          const glm::i64vec2 shared = glm::max(low_cell(kept[i]), low_cell(kept[j]));
+          if (spatial::Columns::column_key(shared.x, shared.y) == here) test(i, j, found[b]);
         }
     }
   });
