@@ -129,29 +129,33 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
         pressed(i) = (1.0 - aspect) * across / l;
       }
     });
-    for (std::size_t i = 0; i < n; ++i)
-      if (!own(i)) pressed(i) = pressed(same_as[i]);
   }
   // An ellipse is the same turned half a turn: each piece's directions turned to agree
   // with the last pressed one before it, then smoothed along the piece (twice by 1/4,
   // 1/2, 1/4, the ends repeated) and made across the yarn again.
-  // A copy's direction, so turned, is its first copy's or that turned half a turn
-  // (turn: +1 or -1; 2 where both are 0, either way; 0 at a point of its own).
+  // A copy takes its first copy's direction as pressed (its first copy, before it, has
+  // been turned already: `flipped` says whether), and is turned as its own would be; so
+  // it ends as its first copy or that turned half a turn (turn: +1 or -1; 2 where both
+  // are 0, either way; 0 at a point of its own).
   std::vector<std::int8_t> turn(same_as.empty() ? 0 : n, 0);
+  std::vector<std::uint8_t> flipped(same_as.empty() ? 0 : n, 0);
   for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
     glm::dvec3 last(0.0);
     auto& v = pieces[piece].pressed;
     for (std::size_t k = 0; k < v.size(); ++k) {
+      const std::size_t i = p.first[piece] + k;
       glm::dvec3& d = v[k];
+      const std::size_t f = own(i) ? i : same_as[i];
+      if (f != i) d = flipped[f] ? -pressed(f) : pressed(f);
+      bool flip = false;
       if (glm::dot(d, d) != 0.0) {
-        if (glm::dot(d, last) < 0.0) d = -d;
+        flip = glm::dot(d, last) < 0.0;
+        if (flip) d = -d;
         last = d;
       }
-      const std::size_t i = p.first[piece] + k;
-      if (!own(i)) {
-        const glm::dvec3& first = pressed(same_as[i]);  // before i: turned already
-        turn[i] = glm::dot(d, d) == 0.0 ? 2 : d == first ? 1 : d == -first ? -1 : 0;
-      }
+      if (same_as.empty()) continue;
+      if (f == i) flipped[i] = flip ? 1 : 0;
+      else turn[i] = glm::dot(d, d) == 0.0 ? 2 : flip == (flipped[f] != 0) ? 1 : -1;
     }
   }
   // The two passes by blocks: each block reads the directions as they were before the
