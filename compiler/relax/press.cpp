@@ -84,11 +84,13 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     spatial::Columns grid(thickest + longest);
     // Only the segments a pressed point looks at (its cell's 3 x 3 columns).
     const spatial::ColumnMask wanted(n, [&](std::size_t i) { return grid.cell_of(p.pos(i)); }, own);
-    for (std::size_t i = 0; i + 1 < n; ++i)
-      if (p.piece[i] == p.piece[i + 1]) {
-        const glm::i64vec3 cell = grid.cell_of(0.5 * (p.pos(i) + p.pos(i + 1)));
-        if (wanted.holds(cell)) grid.add(cell, static_cast<std::uint32_t>(i));
+    for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
+      const auto& points = pieces[piece].data_points;
+      for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+        const glm::i64vec3 cell = grid.cell_of(0.5 * (points[k] + points[k + 1]));
+        if (wanted.holds(cell)) grid.add(cell, static_cast<std::uint32_t>(p.first[piece] + k));
       }
+    }
     grid.index();
     // By blocks of points, not by pieces: a garment is often one piece.
     constexpr std::size_t block = 4096;
