@@ -87,7 +87,8 @@ Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind ki
   if (kind == FrameKind::rotation_minimising) {
     const auto d = nurbs::derivatives(curve, u[0], 2);
     f.normal[0] = principal_normal(d[1], d[2], f.tangent[0], any_perpendicular(f.tangent[0]));
-    propagate_rotation_minimising(f);
+    propagate_rotation_minimising(f);  // which makes the binormals
+    return f;
   }
   for (std::size_t i = 0; i < count; ++i) f.binormal[i] = glm::cross(f.tangent[i], f.normal[i]);
   return f;
