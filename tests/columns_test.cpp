@@ -5,6 +5,7 @@
 // depend on the path taken.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <random>
 #include <vector>
@@ -46,6 +47,14 @@ void expect_one_order(const std::vector<Added>& added) {
     backwards.near(a.cell, [&](const spatial::Columns::Entry& e) { b.push_back(e.item); });
     ASSERT_EQ(f, b);
     ASSERT_FALSE(f.empty());
+    // And exactly the entries within a cell of it every way, counted one by one.
+    std::vector<std::uint32_t> within;
+    for (const Added& o : added)
+      if (std::abs(o.cell.x - a.cell.x) <= 1 && std::abs(o.cell.y - a.cell.y) <= 1 && std::abs(o.cell.z - a.cell.z) <= 1)
+        within.push_back(o.item);
+    std::sort(f.begin(), f.end());
+    std::sort(within.begin(), within.end());
+    ASSERT_EQ(f, within) << "round cell " << a.cell.x << ", " << a.cell.y << ", " << a.cell.z;
   }
 }
 

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -46,7 +45,7 @@ class Columns {
   // After the last add: sorts the entries and maps each column to its run of them.
   void index() {
     dense_.clear();
-    columns_.clear();
+    slots_.clear();
     if (entries_.empty()) return;
     if (!in_insertion_order()) {
       std::sort(entries_.begin(), entries_.end(), before);
@@ -59,11 +58,19 @@ class Columns {
       by_z_within_columns();
       if (dense) return;
     }
-    columns_.reserve(entries_.size() / 4 + 1);
+    // Each column's run in an open-addressed table, at most half full.
+    std::size_t runs = 0;
+    for (std::size_t i = 0; i < entries_.size(); ++i) runs += i == 0 || entries_[i].column != entries_[i - 1].column ? 1 : 0;
+    int bits = 4;
+    while ((std::size_t{1} << bits) < 2 * runs) ++bits;
+    shift_ = 64 - bits;
+    slots_.assign(std::size_t{1} << bits, Slot{});
     for (std::size_t i = 0; i < entries_.size();) {
       std::size_t j = i;
       while (j < entries_.size() && entries_[j].column == entries_[i].column) ++j;
-      columns_.emplace(entries_[i].column, std::make_pair(i, j));
+      std::size_t at = slot_of(entries_[i].column);
+      while (slots_[at].last != 0) at = (at + 1) & (slots_.size() - 1);
+      slots_[at] = {entries_[i].column, i, j};
       i = j;
     }
   }
@@ -117,9 +124,15 @@ class Columns {
       const auto at = static_cast<std::size_t>((x - x0_) * ny_ + (y - y0_));
       return {dense_[at], dense_[at + 1]};
     }
-    const auto hit = columns_.find(column_key(x, y));
-    return hit == columns_.end() ? std::pair<std::size_t, std::size_t>{0, 0} : hit->second;
+    if (slots_.empty()) return {0, 0};
+    const std::uint64_t key = column_key(x, y);
+    for (std::size_t at = slot_of(key);; at = (at + 1) & (slots_.size() - 1)) {
+      const Slot& slot = slots_[at];
+      if (slot.last == 0) return {0, 0};
+      if (slot.column == key) return {slot.first, slot.last};
+    }
   }
+  std::size_t slot_of(std::uint64_t key) const { return static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> shift_); }
 
   // Whether the entries came in the order the sort would leave equal places in (item,
   // image).
@@ -208,7 +221,14 @@ class Columns {
 
   double cell_;
   std::vector<Entry> entries_;
-  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> columns_;  // when not dense
+  // When not dense: each column's entries [first, last), by its key, in a table of a power
+  // of two slots probed in turn from the key's hash (a slot whose last is 0 is empty).
+  struct Slot {
+    std::uint64_t column = 0;
+    std::size_t first = 0, last = 0;
+  };
+  std::vector<Slot> slots_;
+  int shift_ = 64;
   std::vector<std::size_t> dense_;  // when dense: column (x, y)'s entries from dense_[(x - x0_) * ny_ + y - y0_] to the next
   std::int64_t x0_ = 0, y0_ = 0, nx_ = 0, ny_ = 0;
 };
