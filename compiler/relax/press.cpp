@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <climits>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -101,12 +102,17 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
         double deepest = 0.0;
         glm::dvec3 normal(0.0);
         const glm::dvec3& at = p.pos(i);
+        // A segment whose midpoint lies farther than this reaches no free surface of i's
+        // (most of the cells' candidates): passed over before the exact test.
+        const double reach = p.free_r(i) + 0.5 * (thickest + longest), reach2 = reach * reach * (1.0 + 1e-6);
         grid.near(grid.cell_of(at), [&](const spatial::Columns::Entry& e) {
           const std::size_t j = e.item;
+          const glm::dvec3& pj = p.pos(j);
+          const glm::dvec3 off = at - 0.5 * (pj + (&pj)[1]);  // a segment's two points are one piece's
+          if (glm::dot(off, off) > reach2) return;
           const double along_j = 0.5 * (p.along[j] + p.along[j + 1]);
           if (p.piece[j] == p.piece[i] && std::abs(along_j - p.along[i]) <= 1.8 * (p.free_r(i) + p.free_r(j))) return;
-          const glm::dvec3& pj = p.pos(j);
-          const glm::dvec3 seg = (&pj)[1] - pj;  // a segment's two points are one piece's
+          const glm::dvec3 seg = (&pj)[1] - pj;
           const double len2 = glm::dot(seg, seg);
           const double t = len2 > 0.0 ? std::clamp(glm::dot(at - pj, seg) / len2, 0.0, 1.0) : 0.0;
           const glm::dvec3 away = at - (pj + t * seg);
@@ -177,23 +183,31 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
   // A copy whose two neighbours either side are copies of its first copy's, all turned
   // alike, comes out of the passes as its first copy does, turned as they are: taken
   // from it after the passes (derived: that turn; 0 where made here). Most of a tiled
-  // garment's points.
+  // garment's points. Found rolling along the points (the window's last point k).
   std::vector<std::int8_t> derived(n, 0);
-  auto derived_turn = [&](std::size_t i, std::size_t from, std::size_t to) -> std::int8_t {
-    if (same_as.empty() || own(i) || i < from + halo || i + halo >= to) return 0;
-    const std::size_t f = same_as[i], piece = p.piece[f];
-    if (f < p.first[piece] + halo || f + halo >= p.first[piece + 1]) return 0;
-    std::int8_t sign = 2;
-    for (std::size_t k = i - halo; k <= i + halo; ++k) {
-      if (same_as[k] != f + k - i || turn[k] == 0) return 0;
-      if (turn[k] == 2) continue;
-      if (sign != 2 && sign != turn[k]) return 0;
-      sign = turn[k];
+  auto derive = [&](std::size_t lo, std::size_t hi) {
+    if (same_as.empty()) return;
+    constexpr long none = LONG_MIN / 2;
+    long run = 0, last_plus = none, last_minus = none;  // run: points so far that follow their neighbour before, as its first copies do
+    std::size_t piece = p.piece[lo >= 2 * halo ? lo - 2 * halo : 0];
+    for (std::size_t k = lo >= 2 * halo ? lo - 2 * halo : 0; k < std::min(n, hi + halo); ++k) {
+      while (k >= p.first[piece + 1]) ++piece;
+      const bool follows = k > p.first[piece] && !own(k) && !own(k - 1) && same_as[k] == same_as[k - 1] + 1;
+      run = follows ? run + 1 : 0;
+      if (turn[k] == 1) last_plus = static_cast<long>(k);
+      if (turn[k] == -1) last_minus = static_cast<long>(k);
+      if (k < lo + halo) continue;
+      const std::size_t i = k - halo;  // the window [i - 2, i + 2], all copies in one piece following each other
+      if (run < static_cast<long>(2 * halo)) continue;
+      const auto window = static_cast<long>(i - halo);
+      if (last_plus >= window && last_minus >= window) continue;
+      if (p.piece[same_as[i - halo]] != p.piece[same_as[k]]) continue;  // the first copies' window in one piece
+      derived[i] = last_minus >= window ? -1 : 1;
     }
-    return sign == 2 ? 1 : sign;
   };
   parallel_for(blocks, thread_count(threads), [&](std::size_t b) {
     const std::size_t lo = b * block, hi = std::min(n, lo + block);
+    derive(lo, hi);
     // before[k - lo + halo]: the direction before the passes at k, for k in [lo - 2, hi + 2)
     // within the points; once[k - lo + 1]: the first pass at k, for k in [lo - 1, hi + 1).
     std::vector<glm::dvec3> before(hi - lo + 2 * halo), once(hi - lo + 2);
@@ -215,7 +229,7 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
     for (std::size_t i = lo; i < hi; ++i) {
       while (i >= p.first[piece + 1]) ++piece;
       const std::size_t from = p.first[piece], to = p.first[piece + 1];
-      if ((derived[i] = derived_turn(i, from, to)) != 0) continue;
+      if (derived[i] != 0) continue;
       const glm::dvec3& a = once[(i > from ? i - 1 : i) + 1 - lo];
       const glm::dvec3& c = once[(i + 1 < to ? i + 1 : i) + 1 - lo];
       const glm::dvec3 twice = 0.25 * a + 0.5 * once[i + 1 - lo] + 0.25 * c;
