@@ -57,6 +57,27 @@ TEST(NurbsFindSpan, MatchesLinearSearchOnRandomKnotVectors) {
   }
 }
 
+TEST(NurbsFindSpan, WalkingUpFromAnySpanFindsTheSameSpan) {
+  // next_span from every span, for every parameter (some far past it, some behind it,
+  // some at the knots and the ends): find_span's answer each time.
+  std::mt19937 rng(102);
+  for (int trial = 0; trial < 100; ++trial) {
+    const int p = 1 + trial % 4;
+    const int count = p + 1 + std::uniform_int_distribution<int>(0, 60)(rng);
+    const double lo = uniform(rng, -3, 1), hi = lo + uniform(rng, 0.5, 4);
+    const Curve c = random_curve(rng, p, count, false, p, lo, hi);
+    ASSERT_TRUE(nurbs::is_valid(c));
+    auto us = probe_parameters(rng, c, 40);
+    us.insert(us.end(), c.knots.begin(), c.knots.end());
+    us.push_back(lo - 1.0);
+    us.push_back(hi + 1.0);
+    std::sort(us.begin(), us.end());
+    for (int from = 0; from < static_cast<int>(c.knots.size()); ++from)
+      for (const double u : us)
+        ASSERT_EQ(nurbs::next_span(c, from, u), nurbs::find_span(c, u)) << "degree " << p << ", from " << from << ", u = " << u;
+  }
+}
+
 // ---------------------------------------------------------------------------------------
 // Basis functions (A2.3)
 

@@ -39,6 +39,19 @@ int find_span(const Curve& c, double u) {
   return mid;
 }
 
+int next_span(const Curve& c, int from, double u) {
+  const int p = c.degree;
+  const int n = static_cast<int>(c.points.size()) - 1;
+  const auto& U = c.knots;
+  if (u >= U[static_cast<std::size_t>(n + 1)] || u <= U[static_cast<std::size_t>(p)] || from < p || from > n ||
+      u < U[static_cast<std::size_t>(from)])
+    return find_span(c, u);
+  // U[s] <= u holds from `from` on; the span is the first s with u < U[s + 1].
+  for (int s = from, steps = 0; steps < 16; ++s, ++steps)
+    if (u < U[static_cast<std::size_t>(s) + 1]) return s;
+  return find_span(c, u);
+}
+
 namespace {
 
 // The algorithm with the degree known when compiled (P > 0) or read from the curve (P =

@@ -73,7 +73,8 @@ double span_rule(const Curve& c, std::optional<Span>& span, double a, double b) 
   constexpr double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
                            0.2369268850561891};
   const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
-  if (!span || !span->holds(mid)) span.emplace(c, find_span(c, mid));  // the rule's points lie inside one knot span
+  // The rule's points lie inside one knot span; the steps ascend, so it is walked to.
+  if (!span || !span->holds(mid)) span.emplace(c, span ? next_span(c, span->index(), mid) : find_span(c, mid));
   double sum = 0.0;
   for (int i = 0; i < 5; ++i) sum += w[i] * span->speed(mid + half * x[i]);
   return sum * half;
@@ -83,7 +84,8 @@ double segment_length(const Curve& c, std::optional<Span>& span, double u0, doub
   if (span && span->holds(u0) && u1 <= c.knots[static_cast<std::size_t>(span->index()) + 1]) return span_rule(c, span, u0, u1);
   // The speed is only C^(p-1) across a knot: one rule per knot span.
   double total = 0.0, a = u0;
-  for (std::size_t i = static_cast<std::size_t>(find_span(c, u0)) + 1; i < c.knots.size() && c.knots[i] < u1; ++i) {
+  const int first = span ? next_span(c, span->index(), u0) : find_span(c, u0);
+  for (std::size_t i = static_cast<std::size_t>(first) + 1; i < c.knots.size() && c.knots[i] < u1; ++i) {
     if (c.knots[i] <= a) continue;
     total += span_rule(c, span, a, c.knots[i]);
     a = c.knots[i];

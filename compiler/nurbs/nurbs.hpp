@@ -31,6 +31,9 @@ bool is_valid(const Curve& curve);
 // The knot span index i with knots[i] <= u < knots[i+1] (A2.1); u is clamped to the
 // curve's domain, and u at the domain's end falls in the last non-empty span.
 int find_span(const Curve& curve, double u);
+// The same, found by walking up from span `from` (a caller whose parameters ascend, the
+// next a few knots on): a few steps, not a search of the whole knot vector. Any from.
+int next_span(const Curve& curve, int from, double u);
 
 // Basis functions N_{span-p..span, p}(u) and their derivatives up to `order` (A2.3):
 // out[k][j] is the k-th derivative of N_{span-p+j,p} at u. order <= max_order.
