@@ -72,6 +72,8 @@ TEST(CurveCopies, ASpanIsCopiedWhereItAndItsFirstCopyLieAmongCopiesToTheMargin) 
     EXPECT_EQ(breaks[from[k] + 1], first + (b - a));
   }
   EXPECT_GE(copied, 10u);
+  // Found on two threads: the same.
+  EXPECT_EQ(curves::copied_spans(breaks, w.same_as, w.path.data_points, 2), from);
 }
 
 TEST(CurveCopies, APointOutOfPlaceNearASpanStopsItsCopy) {

@@ -19,30 +19,34 @@ double max_sample_step(const Yarn& yarn) {
 }
 
 std::vector<std::size_t> copied_spans(std::span<const std::size_t> breaks, std::span<const std::uint32_t> same_as,
-                                      std::span<const glm::dvec3> points) {
+                                      std::span<const glm::dvec3> points, int threads) {
   constexpr double same = 1e-9;  // mm
   const std::size_t spans = breaks.size() - 1;
   std::vector<std::size_t> from(spans);
-  std::vector<std::size_t> span_at(points.size() + 1, spans);  // the span starting at a break
-  for (std::size_t k = 0; k < spans; ++k) {
-    from[k] = k;
-    span_at[breaks[k]] = k;
-  }
+  for (std::size_t k = 0; k < spans; ++k) from[k] = k;
   if (same_as.empty()) return from;
-  for (std::size_t k = 0; k < spans; ++k) {
+  // Which earlier span each span's points repeat, in parallel (spans for none); then, in
+  // order, taken where that span is sampled itself.
+  std::vector<std::size_t> proposed(spans, spans);
+  parallel_for(spans, thread_count(threads), [&](std::size_t k) {
     const std::size_t a = breaks[k], b = breaks[k + 1];
-    if (same_as[a] >= a || b + copy_margin >= points.size()) continue;
+    if (same_as[a] >= a || b + copy_margin >= points.size()) return;
     const std::size_t shift = a - same_as[a];
-    const std::size_t r = span_at[a - shift];
-    if (r == spans || breaks[r + 1] != b - shift || from[r] != r || a - shift < copy_margin) continue;
+    if (a - shift < copy_margin) return;
+    // The span starting at the break a - shift, if one does.
+    const auto at = std::lower_bound(breaks.begin(), breaks.end() - 1, a - shift);
+    if (at == breaks.end() - 1 || *at != a - shift) return;
+    const auto r = static_cast<std::size_t>(at - breaks.begin());
+    if (breaks[r + 1] != b - shift) return;
     const glm::dvec3 move = points[a] - points[a - shift];
-    bool copy = true;
-    for (std::size_t i = a - copy_margin; i <= b + copy_margin && copy; ++i) {
+    for (std::size_t i = a - copy_margin; i <= b + copy_margin; ++i) {
       const glm::dvec3 off = points[i] - points[i - shift] - move;
-      copy = std::abs(off.x) <= same && std::abs(off.y) <= same && std::abs(off.z) <= same;
+      if (std::abs(off.x) > same || std::abs(off.y) > same || std::abs(off.z) > same) return;
     }
-    if (copy) from[k] = r;
-  }
+    proposed[k] = r;
+  });
+  for (std::size_t k = 0; k < spans; ++k)
+    if (proposed[k] != spans && from[proposed[k]] == proposed[k]) from[k] = proposed[k];
   return from;
 }
 
@@ -66,11 +70,11 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
   breaks.insert(breaks.end(), piece.path.loop_last.begin(), piece.path.loop_last.end());
   std::sort(breaks.begin(), breaks.end());
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
-  std::vector<std::size_t> sample_at(u.size(), 0);  // the sample at each break
+  std::vector<std::size_t> sample_at(breaks.size(), 0);  // the sample at each break
   // The spans between breaks are sampled and their steps measured independently, in
   // parallel, then joined in order; a copy takes its span's, moved along.
   const int threads = thread_count(options.threads);
-  const std::vector<std::size_t> from = copied_spans(breaks, same_as, piece.path.data_points);
+  const std::vector<std::size_t> from = copied_spans(breaks, same_as, piece.path.data_points, threads);
   std::vector<std::vector<double>> spans(breaks.size() - 1), steps(spans.size());
   auto sample = [&](std::size_t k) {
     spans[k] = sweep::sample_parameters(piece.curve.curve, u[breaks[k]], u[breaks[k + 1]], tolerance, 0.5 * d, max_step);
@@ -99,12 +103,16 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
   for (std::size_t k = 0; k < spans.size(); ++k) {
     piece.samples.insert(piece.samples.end(), spans[k].begin() + 1, spans[k].end());
     for (const double step : steps[k]) piece.arc_length.push_back(piece.arc_length.back() + step);
-    sample_at[breaks[k + 1]] = piece.samples.size() - 1;
+    sample_at[k + 1] = piece.samples.size() - 1;
   }
   spans = {};
   steps = {};
+  // A loop's ends are breaks: found among them.
+  auto sample_of = [&](std::size_t point) {
+    return sample_at[static_cast<std::size_t>(std::lower_bound(breaks.begin(), breaks.end(), point) - breaks.begin())];
+  };
   for (std::size_t j = 0; j < piece.path.loops.size(); ++j)
-    piece.loop_samples.emplace_back(sample_at[piece.path.loop_first[j]], sample_at[piece.path.loop_last[j]]);
+    piece.loop_samples.emplace_back(sample_of(piece.path.loop_first[j]), sample_of(piece.path.loop_last[j]));
   piece.frames = sweep::frames(piece.curve.curve, piece.samples, options.frames, threads);
   if (piece.path.pressed.size() == u.size()) {
     const auto& at = piece.path.pressed;

@@ -63,8 +63,9 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
 // index of the earlier span trace() copies it from, or its own: same_as proposes the
 // earlier span, which must have the same length and be sampled itself, and the points
 // round both, copy_margin either side, must lie one translation apart to 1e-9 mm.
+// threads >= 1 (0: every core); the same for any count.
 std::vector<std::size_t> copied_spans(std::span<const std::size_t> breaks, std::span<const std::uint32_t> same_as,
-                                      std::span<const glm::dvec3> points);
+                                      std::span<const glm::dvec3> points, int threads = 1);
 
 // About how many samples trace() places along a piece, from its data points alone (0.87
 // to 1.05 of the count on the library's fabrics): for refusing a fabric too large to
