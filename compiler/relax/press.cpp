@@ -188,7 +188,9 @@ void press(std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>
   auto derive = [&](std::size_t lo, std::size_t hi) {
     if (same_as.empty()) return;
     constexpr long none = LONG_MIN / 2;
-    long run = 0, last_plus = none, last_minus = none;  // run: points so far that follow their neighbour before, as its first copies do
+    // run: how many points in a row follow the point before them as their first copies do;
+    // last_plus, last_minus: the last point turned +1, -1 against its first copy.
+    long run = 0, last_plus = none, last_minus = none;
     std::size_t piece = p.piece[lo >= 2 * halo ? lo - 2 * halo : 0];
     for (std::size_t k = lo >= 2 * halo ? lo - 2 * halo : 0; k < std::min(n, hi + halo); ++k) {
       while (k >= p.first[piece + 1]) ++piece;

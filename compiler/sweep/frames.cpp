@@ -70,7 +70,8 @@ Frames frames(const nurbs::Curve& curve, std::span<const double> u, FrameKind ki
     parallel_for((count + block - 1) / block, thread_count(threads), [&](std::size_t b) {
       std::optional<nurbs::Span> span;
       for (std::size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
-        if (!span || !span->holds(u[i])) span.emplace(curve, span ? nurbs::next_span(curve, span->index(), u[i]) : nurbs::find_span(curve, u[i]));
+        if (!span || !span->holds(u[i]))
+          span.emplace(curve, span ? nurbs::next_span(curve, span->index(), u[i]) : nurbs::find_span(curve, u[i]));
         const auto d = span->derivatives(u[i], 1);
         f.origin[i] = d[0];
         f.tangent[i] = glm::normalize(d[1]);
