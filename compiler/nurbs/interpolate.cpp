@@ -85,22 +85,26 @@ class ProfileMatrix {
   std::unique_ptr<double[]> cells_;
 };
 
-std::vector<double> data_parameters(std::span<const Point> q, Parametrisation kind) {
+// Each step is made in parallel into the parameters' own array, then summed and
+// accumulated in order: the same bits as one pass, for any thread count (a garment's
+// 1.8 million steps took 18 ms on one thread).
+std::vector<double> data_parameters(std::span<const Point> q, Parametrisation kind, int threads) {
   const std::size_t n = q.size() - 1;
-  // Each step is found twice, not kept: a garment's are 14 MB.
-  auto step = [&](std::size_t k) {
-    const double chord = glm::distance(q[k], q[k - 1]);
-    return kind == Parametrisation::centripetal ? std::sqrt(chord) : chord;
-  };
+  std::vector<double> u(n + 1);
+  constexpr std::size_t block = 65536;
+  parallel_for((n + block - 1) / block, threads, [&](std::size_t b) {
+    for (std::size_t k = 1 + b * block, to = std::min(n, (b + 1) * block); k <= to; ++k) {
+      const double chord = glm::distance(q[k], q[k - 1]);
+      u[k] = kind == Parametrisation::centripetal ? std::sqrt(chord) : chord;
+    }
+  });
   double total = 0.0;
   for (std::size_t k = 1; k <= n; ++k) {
-    const double s = step(k);
-    if (!(s > 0.0)) throw std::invalid_argument("nurbs: two consecutive data points coincide");
-    total += s;
+    if (!(u[k] > 0.0)) throw std::invalid_argument("nurbs: two consecutive data points coincide");
+    total += u[k];
   }
-  std::vector<double> u(n + 1);
   u[0] = 0.0;
-  for (std::size_t k = 1; k < n; ++k) u[k] = u[k - 1] + step(k) / total;
+  for (std::size_t k = 1; k < n; ++k) u[k] = u[k - 1] + u[k] / total;
   u[n] = 1.0;
   return u;
 }
@@ -136,7 +140,7 @@ Interpolant interpolate(std::span<const Point> q, const InterpolationOptions& op
     throw std::invalid_argument("nurbs: give both end derivatives or neither");
 
   Interpolant result;
-  result.parameters = data_parameters(q, options.parametrisation);
+  result.parameters = data_parameters(q, options.parametrisation, thread_count(options.threads));
   const auto& ub = result.parameters;
   Curve& c = result.curve;
 
@@ -147,11 +151,14 @@ Interpolant interpolate(std::span<const Point> q, const InterpolationOptions& op
   c.knots.assign(static_cast<std::size_t>(controls + p + 1), 0.0);
   for (int i = 0; i <= p; ++i) c.knots[c.knots.size() - 1 - i] = 1.0;
   if (!with_ends) {
-    for (int j = 1; j <= n - p; ++j) {  // eq. 9.8
-      double s = 0.0;
-      for (int i = j; i <= j + p - 1; ++i) s += ub[i];
-      c.knots[j + p] = s / p;
-    }
+    constexpr int block = 65536;  // eq. 9.8, by blocks of knots in parallel
+    parallel_for(static_cast<std::size_t>(std::max(0, n - p) + block - 1) / block, thread_count(options.threads), [&](std::size_t b) {
+      for (int j = 1 + static_cast<int>(b) * block, to = std::min(n - p, (static_cast<int>(b) + 1) * block); j <= to; ++j) {
+        double s = 0.0;
+        for (int i = j; i <= j + p - 1; ++i) s += ub[static_cast<std::size_t>(i)];
+        c.knots[static_cast<std::size_t>(j + p)] = s / p;
+      }
+    });
   } else {
     for (int j = 0; j <= n - p + 1; ++j) {  // eq. 9.22
       double s = 0.0;
