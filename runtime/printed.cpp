@@ -132,6 +132,7 @@ RunResult run_printed_file(const std::string& path, const PrintedOptions& printe
   } catch (const SourceTooLarge& e) {
     throw PatternError(printable(e.what()));
   }
+  if (const std::string why = not_text(path, text); !why.empty()) throw PatternError(printable(why));
   // Lines that start with '#' are headings and notes (Markdown's, or a header the
   // designer keeps): blanked, so their words state nothing and the lines keep their numbers.
   for (std::size_t at = 0; at < text.size();) {

@@ -185,6 +185,7 @@ RunResult run_pattern_file(const std::string& path, const RunOptions& options) {
   } catch (const SourceTooLarge& e) {
     throw PatternError(printable(e.what()));
   }
+  if (const std::string why = not_text(path, text); !why.empty()) throw PatternError(printable(why));
   return run_pattern(text, path, options);
 }
 

@@ -51,4 +51,19 @@ std::string read_source(const std::string& path, std::size_t max_bytes) {
   return text;
 }
 
+std::string not_text(const std::string& path, std::string_view text) {
+  const std::string give = "give knitc the pattern's text: a .lua script, a .k machine program or a printed pattern in a .txt file";
+  auto starts = [&](std::string_view magic) { return text.substr(0, magic.size()) == magic; };
+  std::string what;
+  if (starts("glTF")) what = "the file is a glTF binary (a .glb, as knitc writes), not a pattern; open it in a glTF viewer, or " + give;
+  else if (starts("\x89PNG") || starts("\xFF\xD8\xFF") || starts("GIF8")) what = "the file is an image, not a pattern; " + give;
+  else if (starts("%PDF-")) what = "the file is a PDF, not plain text; copy the pattern's text into a .txt file and give knitc that";
+  else if (starts("PK\x03\x04"))
+    what = "the file is zipped (a word processor's .docx or .odt, or an archive), not plain text; save the pattern as plain text (.txt) and give knitc that";
+  else if (starts("\xFF\xFE") || starts("\xFE\xFF"))  // Windows' "Unicode" text
+    what = "the file is UTF-16 text; save it as UTF-8 (plain text) and give knitc that";
+  else if (!starts("\x1bLua") && text.find('\0') != std::string_view::npos) what = "the file holds a NUL byte: it is not a text file; " + give;
+  return what.empty() ? what : path + ":1: " + what;
+}
+
 }  // namespace knitc::runtime

@@ -250,5 +250,54 @@ TEST(PrintedFile, ProblemsSayWhereAndMisuseExitsTwo) {
   fs::remove_all(dir);
 }
 
+// A file that is not a pattern's text (knitc's own .glb given back to it, a picture of
+// the chart, a PDF, a word processor's document, Windows' UTF-16 text, bytes) is refused
+// at once, saying what it is and what to give instead, not read line by line as rows
+// that are not rows. A Lua binary chunk is still refused by Lua's loader, by name; and
+// the command line exits 1 and writes nothing.
+TEST(PrintedFile, AFileThatIsNotTextSaysWhatItIs) {
+  using namespace std::string_literals;
+  const fs::path dir = test::scratch_dir("not_text");
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"front.glb", "glTF\x02\0\0\0"s + "JSON{}"},
+      {"chart.png", "\x89PNG\r\n\x1a\n\0\0\0\rIHDR"s},
+      {"chart.jpg", "\xFF\xD8\xFF\xE0\0\x10JFIF"s},
+      {"pattern.pdf", "%PDF-1.4\n1 0 obj\n<< /Type /Catalog >>\nendobj\n"},
+      {"pattern.docx", "PK\x03\x04\x14\0\x06\0"s + "[Content_Types].xml"},
+      {"notepad.txt", "\xFF\xFER\0o\0w\0 \0\x31\0:\0 \0k\0\n\0"s},
+      {"bytes.txt", "Row 1: k2, p2.\nRow 2: \0\x13\x37.\n"s},
+      {"front.lua", "glTF\x02\0\0\0"s + "JSON{}"},
+  };
+  const std::vector<std::string> said = {"is a glTF binary (a .glb, as knitc writes)", "is an image", "is an image", "is a PDF",
+                                         "is zipped", "is UTF-16 text", "holds a NUL byte", "is a glTF binary"};
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const fs::path file = dir / files[i].first;
+    test::write_text(file, files[i].second);
+    SCOPED_TRACE(files[i].first);
+    try {
+      if (file.extension() == ".lua") runtime::run_pattern_file(file.string());
+      else runtime::run_printed_file(file.string(), {});
+      ADD_FAILURE() << "read as a pattern";
+    } catch (const runtime::PatternError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(file.string() + ":1: the file " + said[i], 0), 0u) << what;
+      EXPECT_NE(what.find("; "), std::string::npos) << what;  // and what to give instead
+    }
+  }
+  // Lua's own refusal of a binary chunk, which names it.
+  test::write_text(dir / "chunk.lua", "\x1bLua\x54\0\x19\x93"s);
+  try {
+    runtime::run_pattern_file((dir / "chunk.lua").string());
+    ADD_FAILURE() << "a binary chunk was run";
+  } catch (const runtime::PatternError& e) {
+    EXPECT_NE(std::string(e.what()).find("attempt to load a binary chunk"), std::string::npos) << e.what();
+  }
+  const auto build = test::run_knitc("build " + quoted(dir / "front.glb") + " -o " + quoted(dir / "out.glb"));
+  EXPECT_EQ(build.exit_code, 1);
+  EXPECT_NE(build.err.find("front.glb:1: the file is a glTF binary"), std::string::npos) << build.err;
+  EXPECT_FALSE(fs::exists(dir / "out.glb"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace knitc
