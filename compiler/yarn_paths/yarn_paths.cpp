@@ -35,15 +35,15 @@ struct PieceBuilder {
   }
 
   // Yarn lying straight from a to b (course-local, same course) at height z off the fabric,
-  // a point about every loop width, all steps alike from a to b (the ends themselves not
-  // added). The ends by value: a caller's `a` is often last_local, which each add() moves
-  // (by reference, the points bunched up toward b, a long float's last ones a nanometre
-  // apart, and the curve through them was sampled millions of times).
+  // a point about every loop width, each in the middle of its share of the way (the ends
+  // themselves not added). The ends by value: a caller's `a` is often last_local, which
+  // each add() moves (by reference, the points bunched up toward b, a long float's last
+  // ones a nanometre apart, and the curve through them was sampled millions of times).
   void float_between(const glm::dvec3 a, const glm::dvec3 b, double z, int course) {
     const double W = layout.loop_width;
     const int n = std::max(1, static_cast<int>(std::lround(std::abs(b.x - a.x) / W)));
     for (int k = 0; k < n; ++k) {
-      const double t = (k + 1.0) / (n + 1);
+      const double t = (k + 0.5) / n;
       glm::dvec3 p = a + t * (b - a);
       p.z = z;
       add(p, course);
