@@ -55,8 +55,9 @@ std::string not_text(const std::string& path, std::string_view text) {
   const std::string give = "give knitc the pattern's text: a .lua script, a .k machine program or a printed pattern in a .txt file";
   auto starts = [&](std::string_view magic) { return text.substr(0, magic.size()) == magic; };
   std::string what;
-  if (starts("glTF")) what = "the file is a glTF binary (a .glb, as knitc writes), not a pattern; open it in a glTF viewer, or " + give;
-  else if (starts("\x89PNG") || starts("\xFF\xD8\xFF") || starts("GIF8")) what = "the file is an image, not a pattern; " + give;
+  // (A text could begin "glTF": a .glb's version, a little-endian 32-bit 1 or 2, follows.)
+  if (starts("glTF") && text.size() >= 8 && text.substr(5, 3) == std::string_view("\0\0\0", 3)) what = "the file is a glTF binary (a .glb, as knitc writes), not a pattern; open it in a glTF viewer, or " + give;
+  else if (starts("\x89PNG") || starts("\xFF\xD8\xFF") || starts("GIF87a") || starts("GIF89a")) what = "the file is an image, not a pattern; " + give;
   else if (starts("%PDF-")) what = "the file is a PDF, not plain text; copy the pattern's text into a .txt file and give knitc that";
   else if (starts("PK\x03\x04"))
     what = "the file is zipped (a word processor's .docx or .odt, or an archive), not plain text; save the pattern as plain text (.txt) and give knitc that";

@@ -284,6 +284,11 @@ TEST(PrintedFile, AFileThatIsNotTextSaysWhatItIs) {
       EXPECT_NE(what.find("; "), std::string::npos) << what;  // and what to give instead
     }
   }
+  // A text that only begins like one is read as text.
+  test::write_text(dir / "notes.txt", "glTF notes, then the pattern.\nRow 1: k2, p2.\n");
+  runtime::PrintedOptions four;
+  four.cast_on = 4;
+  EXPECT_NO_THROW(runtime::run_printed_file((dir / "notes.txt").string(), four));
   // Lua's own refusal of a binary chunk, which names it.
   test::write_text(dir / "chunk.lua", "\x1bLua\x54\0\x19\x93"s);
   try {

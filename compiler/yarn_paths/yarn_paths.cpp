@@ -27,19 +27,21 @@ struct PieceBuilder {
 
   void add(const glm::dvec3& local, int course) {
     const glm::dvec3 p = layout::to_fabric(layout, local, course);
-    // Never two equal points in a row: the interpolation needs distinct parameters.
-    if (!piece.data_points.empty() && glm::distance(piece.data_points.back(), p) < 1e-9) return;
+    // Never two equal points in a row, nor two all but equal: the interpolation needs
+    // distinct parameters, and a curve through points a nanometre apart turns there in a
+    // cusp its sampling cannot follow (a long float's last points, float_between below).
+    if (!piece.data_points.empty() && glm::distance(piece.data_points.back(), p) < 1e-3) return;
     piece.data_points.push_back(p);
     last_local = local;
     last_course = course;
   }
 
   // Yarn lying straight from a to b (course-local, same course) at height z off the fabric,
-  // a point about every loop width, each in the middle of its share of the way (the ends
-  // themselves not added). The ends by value: a caller's `a` is often last_local, which
-  // each add() moves (by reference, the points bunched up toward b, a long float's last
-  // ones a nanometre apart, and the curve through them was sampled millions of times).
-  void float_between(const glm::dvec3 a, const glm::dvec3 b, double z, int course) {
+  // a point about every loop width, the ends themselves not added. (Known: callers pass
+  // last_local as `a`, which each add() moves, so the points' shares compound toward b;
+  // spacing them evenly moves the cables past their tests: docs/knitout.md, "Programs
+  // found elsewhere". add() keeps the bunched ends from meeting.)
+  void float_between(const glm::dvec3& a, const glm::dvec3& b, double z, int course) {
     const double W = layout.loop_width;
     const int n = std::max(1, static_cast<int>(std::lround(std::abs(b.x - a.x) / W)));
     for (int k = 0; k < n; ++k) {
