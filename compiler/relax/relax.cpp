@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <span>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -23,56 +24,89 @@ namespace {
 // A piece of at least 4 spans of this many points is worked span by span (each_piece).
 constexpr std::size_t span_points = 16384;
 
-// Calls work(from, to) for each piece's points [from, to); the pieces touch no point of
+// A stretch of the chains' points, [from, to).
+struct Range {
+  std::size_t from, to;
+};
+
+// Calls step(i) for i from r.from + lo to r.to - hi - 1 of each range, ascending (or
+// descending, `down`), in the order of each range's own walk. Each step of a sweep waits
+// on the last (it moves the point the next one reads), so one walk is bound by its
+// latency; four disjoint ranges are walked side by side, which the core overlaps. Each
+// range's steps are the same operations in the same order: the same bits.
+template <class Step>
+void walk(std::span<const Range> ranges, std::size_t lo, std::size_t hi, bool down, Step&& step) {
+  constexpr std::size_t side_by_side = 4;
+  auto length = [&](const Range& r) { return r.to > r.from + lo + hi ? r.to - r.from - lo - hi : std::size_t{0}; };
+  for (std::size_t g = 0; g < ranges.size(); g += side_by_side) {
+    const auto group = ranges.subspan(g, std::min(side_by_side, ranges.size() - g));
+    std::size_t longest = 0;
+    for (const Range& r : group) longest = std::max(longest, length(r));
+    for (std::size_t t = 0; t < longest; ++t)
+      for (const Range& r : group)
+        if (t < length(r)) step(down ? r.to - hi - 1 - t : r.from + lo + t);
+  }
+}
+
+// Calls work(ranges) with each piece's points as a range; the pieces touch no point of
 // another's, so they go in parallel (blocks of pieces about equal in points), unless a
-// strain is summed, whose sum must keep one order. A piece of 4 spans or more (a large
-// fabric knitted from one yarn, a machine program's) is cut into spans that run on
-// `overlap` points into the next (1: every segment, for the lengths; 2: every middle of
-// three points, for bending): the even spans go in parallel with the short pieces, then
-// the odd ones, so no two at once touch a point. The spans depend on the piece alone: the
-// result is the same for any thread count.
+// strain is summed, whose sum must keep one order (then one range a call, in order). A
+// piece of 4 spans or more (a large fabric knitted from one yarn, a machine program's) is
+// cut into spans that run on `overlap` points into the next (1: every segment, for the
+// lengths; 2: every middle of three points, for bending): the even spans go in parallel
+// with the short pieces, then the odd ones, so no two at once touch a point, and a call's
+// ranges never touch each other's points. The spans depend on the piece alone: the result
+// is the same for any thread count.
 template <class Work>
 void each_piece(const Chains& c, int threads, const Strain* strain, std::size_t overlap, Work&& work) {
   const std::size_t pieces = c.first.size() - 1;
+  auto piece_range = [&](std::size_t piece) { return Range{c.first[piece], c.first[piece + 1]}; };
   if (strain) {
-    for (std::size_t piece = 0; piece < pieces; ++piece) work(c.first[piece], c.first[piece + 1]);
+    for (std::size_t piece = 0; piece < pieces; ++piece) {
+      const Range r = piece_range(piece);
+      work(std::span<const Range>(&r, 1));
+    }
     return;
   }
-  struct Span {
-    std::size_t from, to;
-  };
-  std::vector<Span> even, odd;  // the long pieces' spans
-  std::vector<std::size_t> short_pieces;
+  std::vector<Range> even, odd;  // the long pieces' spans
+  std::vector<Range> short_pieces;
   for (std::size_t piece = 0; piece < pieces; ++piece) {
     const std::size_t from = c.first[piece], to = c.first[piece + 1], points = to - from;
     const std::size_t spans = points / span_points;
     if (spans < 4) {
-      short_pieces.push_back(piece);
+      short_pieces.push_back(piece_range(piece));
       continue;
     }
     for (std::size_t k = 0; k < spans; ++k)
       (k % 2 == 0 ? even : odd).push_back({from + points * k / spans, std::min(to, from + points * (k + 1) / spans + overlap)});
   }
   if (even.empty() && (threads <= 1 || pieces < 2)) {  // nothing to share out
-    for (std::size_t piece = 0; piece < pieces; ++piece) work(c.first[piece], c.first[piece + 1]);
+    work(std::span<const Range>(short_pieces));
     return;
   }
-  // The short pieces in blocks about equal in points, then the even spans: one phase.
+  // The short pieces in blocks about equal in points, then the even spans four to a
+  // call: one phase.
   const std::size_t wanted = std::min<std::size_t>(short_pieces.size(), 4 * static_cast<std::size_t>(std::max(threads, 1)));
   std::vector<std::size_t> block_first(wanted + 1, short_pieces.size());  // into short_pieces
   if (wanted > 0) {
     std::size_t total = 0;
-    for (std::size_t piece : short_pieces) total += c.first[piece + 1] - c.first[piece];
+    for (const Range& r : short_pieces) total += r.to - r.from;
     for (std::size_t b = 0, k = 0, seen = 0; b < wanted; ++b) {
-      while (k < short_pieces.size() && seen < total * b / wanted) seen += c.first[short_pieces[k] + 1] - c.first[short_pieces[k]], ++k;
+      while (k < short_pieces.size() && seen < total * b / wanted) seen += short_pieces[k].to - short_pieces[k].from, ++k;
       block_first[b] = k;
     }
   }
-  parallel_for(wanted + even.size(), threads, [&](std::size_t u) {
-    if (u >= wanted) return work(even[u - wanted].from, even[u - wanted].to);
-    for (std::size_t k = block_first[u]; k < block_first[u + 1]; ++k) work(c.first[short_pieces[k]], c.first[short_pieces[k] + 1]);
+  constexpr std::size_t spans_a_call = 4;
+  auto calls = [&](const std::vector<Range>& spans) { return (spans.size() + spans_a_call - 1) / spans_a_call; };
+  auto spans_of = [&](const std::vector<Range>& spans, std::size_t call) {
+    const std::size_t from = call * spans_a_call;
+    return std::span<const Range>(spans).subspan(from, std::min(spans_a_call, spans.size() - from));
+  };
+  parallel_for(wanted + calls(even), threads, [&](std::size_t u) {
+    if (u >= wanted) return work(spans_of(even, u - wanted));
+    work(std::span<const Range>(short_pieces).subspan(block_first[u], block_first[u + 1] - block_first[u]));
   });
-  parallel_for(odd.size(), threads, [&](std::size_t u) { work(odd[u].from, odd[u].to); });
+  parallel_for(calls(odd), threads, [&](std::size_t u) { work(spans_of(odd, u)); });
 }
 
 // Every segment back to its length: a sweep up each chain, then one down, so a
@@ -95,9 +129,9 @@ void keep_lengths(Chains& c, int threads, Strain* strain = nullptr) {
     for (std::size_t i = c.pos.size(); i-- > 1;) keep(i - 1);
     return;
   }
-  each_piece(c, threads, strain, 1, [&](std::size_t from, std::size_t to) {
-    for (std::size_t i = from; i + 1 < to; ++i) keep(i);
-    for (std::size_t i = to; i-- > from + 1;) keep(i - 1);
+  each_piece(c, threads, strain, 1, [&](std::span<const Range> ranges) {
+    walk(ranges, 0, 1, false, keep);
+    walk(ranges, 0, 1, true, keep);
   });
 }
 
@@ -107,12 +141,12 @@ void keep_lengths(Chains& c, int threads, Strain* strain = nullptr) {
 // the gradient of the squared second differences, the discrete rod's bending energy.
 // Held lengths and contacts stop it; what is left opens the loops.
 void bend(Chains& c, double stiffness, int threads, Strain* strain = nullptr) {
-  each_piece(c, threads, strain, 2, [&](std::size_t from, std::size_t to) {
-    for (std::size_t i = from + 1; i + 1 < to; ++i) {
+  each_piece(c, threads, strain, 2, [&](std::span<const Range> ranges) {
+    walk(ranges, 1, 1, false, [&](std::size_t i) {
       const glm::dvec3 second = c.pos[i - 1] + c.pos[i + 1] - 2.0 * c.pos[i];
       const double wi = c.inv_mass[i], wa = c.inv_mass[i - 1], wb = c.inv_mass[i + 1];
       const double sum = 4.0 * wi + wa + wb;  // the constraint's gradient (1, -2, 1), squared, by mobility
-      if (sum <= 0.0) continue;
+      if (sum <= 0.0) return;
       const glm::dvec3 step = (stiffness / sum) * second;
       // (A periodic repeat's size: the step's change of the two segments, by each.)
       if (strain) {
@@ -122,7 +156,7 @@ void bend(Chains& c, double stiffness, int threads, Strain* strain = nullptr) {
       c.pos[i] += 2.0 * wi * step;
       c.pos[i - 1] -= wa * step;
       c.pos[i + 1] -= wb * step;
-    }
+    });
   });
 }
 
@@ -130,23 +164,23 @@ void bend(Chains& c, double stiffness, int threads, Strain* strain = nullptr) {
 // neighbours is smaller, the point moves toward their chord and the neighbours away,
 // keeping the three points' centroid.
 void limit_bends(Chains& c, double radii, int threads) {
-  each_piece(c, threads, nullptr, 2, [&](std::size_t from, std::size_t to) {
-    for (std::size_t i = from + 1; i + 1 < to; ++i) {
+  each_piece(c, threads, nullptr, 2, [&](std::span<const Range> ranges) {
+    walk(ranges, 1, 1, false, [&](std::size_t i) {
       const glm::dvec3 mid = 0.5 * (c.pos[i - 1] + c.pos[i + 1]);
       const double half_chord = 0.5 * glm::distance(c.pos[i - 1], c.pos[i + 1]);
       const double rise = glm::distance(c.pos[i], mid);
       const double radius = radii * c.shell[i];
       // The circle through the three points has radius (half_chord^2 + rise^2) / (2 rise).
-      if (rise <= 1e-12 || half_chord * half_chord + rise * rise <= 2.0 * rise * radius) continue;
+      if (rise <= 1e-12 || half_chord * half_chord + rise * rise <= 2.0 * rise * radius) return;
       const double allowed = half_chord < radius ? radius - std::sqrt(radius * radius - half_chord * half_chord) : radius;
       const glm::dvec3 move = (mid - c.pos[i]) * ((rise - std::min(allowed, rise)) / rise);
       const double wi = c.inv_mass[i], wa = c.inv_mass[i - 1], wb = c.inv_mass[i + 1];
       const double sum = wi + 0.25 * (wa + wb);
-      if (sum <= 0.0) continue;
+      if (sum <= 0.0) return;
       c.pos[i] += (wi / sum) * move;
       c.pos[i - 1] -= (0.5 * wa / sum) * move;
       c.pos[i + 1] -= (0.5 * wb / sum) * move;
-    }
+    });
   });
 }
 
