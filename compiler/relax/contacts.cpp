@@ -138,6 +138,10 @@ struct Contacts::Grid {
   // their pairs may reach. (None where the cell allows for the longest: see grid_of.)
   std::vector<std::uint8_t> long_segment;
   int long_reach = 1;
+  // Each contactable segment's half length (0 for the others), measured once: a search
+  // meets each segment as a candidate some 75 times, and its square root was most of a
+  // candidate's cost.
+  std::vector<double> half;
   bool empty() const { return lo.x > hi.x; }
   bool free_near(const glm::i64vec3& cell) const {
     for (int dx = -1; dx <= 1; ++dx)
@@ -157,9 +161,11 @@ Contacts::Grid Contacts::grid_of(const Chains& c) const {
   const std::size_t n = c.pos.size();
   double longest = 0.0, sum = 0.0;
   std::size_t counted = 0;
+  g.half.assign(n, 0.0);
   for (std::size_t i = 0; i + 1 < n; ++i) {
     if (!c.contactable[i]) continue;
     const double length = glm::distance(c.pos[i], c.pos[i + 1]);
+    g.half[i] = 0.5 * length;
     longest = std::max(longest, length);
     sum += length;
     ++counted;
@@ -229,16 +235,17 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
     // Two segments that share a point cannot be pushed apart: not a contact, however
     // long they are (where the curve through two close data points swings wide,
     // refine's segments along it are long enough to pass the test below).
+    // (The tests are all needed for a pair: the cheapest, the midpoints' distance, first.)
+    const glm::dvec3 offset(sx * period_.x, sy * period_.y, 0.0);
+    const glm::dvec3 between = ma - midpoint(c, bs) - offset;
+    const double bound = c.shell[a] + c.shell[bs] + margin_ + half_a + grid.half[bs];
+    if (glm::dot(between, between) > bound * bound) return false;
     if (bs == a + 1 && sx == 0 && sy == 0 && c.segment[a] && c.piece[a] == c.piece[bs]) return false;
     // One stretch of yarn, not a contact: of one piece, close along it (or along its
     // image, a period on, when its yarn runs on into the next tile).
     if (sy == 0 && c.piece[a] == c.piece[bs] &&
         std::abs(along_mid(c, a) - along_mid(c, bs) - sx * c.along_period[c.piece[a]]) <= 1.8 * (c.shell[a] + c.shell[bs]))
       return false;
-    const glm::dvec3 offset(sx * period_.x, sy * period_.y, 0.0);
-    const glm::dvec3 between = ma - midpoint(c, bs) - offset;
-    const double bound = c.shell[a] + c.shell[bs] + margin_ + half_a + 0.5 * glm::distance(c.pos[bs], c.pos[bs + 1]);
-    if (glm::dot(between, between) > bound * bound) return false;
     const auto held = static_cast<std::uint8_t>((c.inv_mass[a] == 0.0 ? 1 : 0) | (c.inv_mass[a + 1] == 0.0 ? 2 : 0) |
                                                 (c.inv_mass[bs] == 0.0 ? 4 : 0) | (c.inv_mass[bs + 1] == 0.0 ? 8 : 0));
     if (held == 15) return false;  // neither can move: nothing to push
@@ -262,7 +269,7 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
       const glm::dvec3 ma = midpoint(c, a);
       const glm::i64vec3 cell = grid.columns.cell_of(ma);
       if (held_segment(c, a) && !grid.free_near(cell)) continue;
-      const double half_a = 0.5 * glm::distance(c.pos[a], c.pos[a + 1]);
+      const double half_a = grid.half[a];
       const Known mine = known_of(a);
       grid.columns.near(cell, [&](const spatial::Columns::Entry& b) {
         if (b.item <= a || is_long(b.item)) return;  // a long one finds its own pairs
@@ -283,13 +290,13 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
     const std::size_t a = longs[k];
     const Known mine = known_of(a);
     const glm::dvec3 ma = midpoint(c, a);
-    const double half_a = 0.5 * glm::distance(c.pos[a], c.pos[a + 1]);
+    const double half_a = grid.half[a];
     grid.columns.near(grid.columns.cell_of(ma), grid.long_reach, [&](const spatial::Columns::Entry& b) {
       if (b.item == a || (is_long(b.item) && b.item < a)) return;
       Pair pair;
       const std::size_t bs = b.item;
       const bool kept = bs > a ? pair_of(a, ma, half_a, bs, b.sx, b.sy, &mine, pair)
-                               : pair_of(bs, midpoint(c, bs), 0.5 * glm::distance(c.pos[bs], c.pos[bs + 1]), a,
+                               : pair_of(bs, midpoint(c, bs), grid.half[bs], a,
                                          static_cast<std::int8_t>(-b.sx), static_cast<std::int8_t>(-b.sy), nullptr, pair);
       if (kept) long_found[k].push_back(pair);
     });
