@@ -1,4 +1,5 @@
 // Contacts between yarn segments, as capsules of the yarn's radius. Internal to relax/.
+// (contacts_search.cpp finds the pairs; contacts.cpp pushes them apart.)
 //
 // The pairs of segments closer than their radii plus a margin are found with a grid
 // and kept (a Verlet list) until some point has moved half the margin. Pushing them
