@@ -269,36 +269,24 @@ TEST(Relax, RefineOnThreadsPutsEachPointOnTheCurveAsSearchedFor) {
   }
 }
 
-// A few segments far longer than the rest (a machine-knit hat's 2.4 mm against a mean of
-// 0.33) no longer size the contact grid's cell: the cell allows for twice the mean and
-// the long ones search as far as they reach. Every pair is still found: the deepest
-// overlap and the mean squeeze of the listed pairs are those of every pair, counted one
-// by one. Short yarns in three layers; two long ones across them, one through the
-// middle layer's yarns near its ends, far from its midpoint.
-TEST(Relax, LongSegmentsAmongShortOnesFindEveryPair) {
-  relax::Chains c;
-  auto add_piece = [&](const std::vector<glm::dvec3>& points) {
-    const std::size_t first = c.pos.size();
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      c.pos.push_back(points[k]);
-      c.along.push_back(k == 0 ? 0.0 : c.along.back() + glm::distance(points[k - 1], points[k]));
-      c.piece.push_back(static_cast<std::uint32_t>(c.first.size()));
-      const bool last = k + 1 == points.size();
-      c.segment.push_back(last ? 0 : 1);
-      c.contactable.push_back(last ? 0 : 1);
-      c.rest_length.push_back(last ? 0.0 : glm::distance(points[k], points[k + 1]));
-    }
-    c.first.push_back(first);
-    c.along_period.push_back(0.0);
-  };
-  for (int layer = 0; layer < 3; ++layer)
-    for (int row = 0; row < 12; ++row) {
-      std::vector<glm::dvec3> yarn;
-      for (int k = 0; k <= 40; ++k) yarn.push_back({0.3 * k, 0.31 * row + 0.05 * layer, 0.17 * (layer - 1) + 0.01 * std::sin(k + row)});
-      add_piece(yarn);
-    }
-  add_piece({{-0.5, 0.2, 0.02}, {2.6, 1.9, -0.03}, {5.7, 3.2, 0.04}, {8.8, 0.1, 0.0}});
-  add_piece({{1.0, 3.6, 0.15}, {4.1, 0.05, -0.1}, {7.0, 3.5, 0.12}});
+// Chains built by hand for the contact tests: a yarn of straight segments as a piece of
+// its own, each segment contactable; then the chains closed with a core 0.1 mm and a free
+// diameter 0.2 mm everywhere, every point free.
+void add_yarn(relax::Chains& c, const std::vector<glm::dvec3>& points) {
+  const std::size_t first = c.pos.size();
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    c.pos.push_back(points[k]);
+    c.along.push_back(k == 0 ? 0.0 : c.along.back() + glm::distance(points[k - 1], points[k]));
+    c.piece.push_back(static_cast<std::uint32_t>(c.first.size()));
+    const bool last = k + 1 == points.size();
+    c.segment.push_back(last ? 0 : 1);
+    c.contactable.push_back(last ? 0 : 1);
+    c.rest_length.push_back(last ? 0.0 : glm::distance(points[k], points[k + 1]));
+  }
+  c.first.push_back(first);
+  c.along_period.push_back(0.0);
+}
+void close_yarns(relax::Chains& c) {
   c.first.push_back(c.pos.size());
   const std::size_t n = c.pos.size();
   c.rest = c.pos;
@@ -308,26 +296,125 @@ TEST(Relax, LongSegmentsAmongShortOnesFindEveryPair) {
   c.on_loop.assign(n, 1);
   c.thickest = 0.2;
   c.thickest_core = 0.1;
-  relax::Contacts contacts(glm::dvec2(0.0), relax::contact_margin * c.thickest, false, 2);
-  contacts.find(c);
+}
+
+// Every pair of segments of different yarns counted one by one: the deepest overlap of
+// the 0.1 mm cores, and the mean squeeze of the pairs whose 0.2 mm free surfaces press
+// (what Contacts::deepest and compression say of the listed pairs); and how many press.
+struct EveryPair {
   double deepest = 0.0, squeeze = 0.0;
   std::size_t pressed = 0;
+};
+EveryPair every_pair(const relax::Chains& c) {
+  EveryPair e;
+  const std::size_t n = c.pos.size();
   for (std::size_t a = 0; a + 1 < n; ++a)
     for (std::size_t b = a + 1; b + 1 < n; ++b) {
       if (!c.contactable[a] || !c.contactable[b] || c.piece[a] == c.piece[b]) continue;
       double s, t;
       relax::closest_points(c.pos[a], c.pos[a + 1], c.pos[b], c.pos[b + 1], s, t);
       const double dist = glm::distance(glm::mix(c.pos[a], c.pos[a + 1], s), glm::mix(c.pos[b], c.pos[b + 1], t));
-      deepest = std::max(deepest, 0.1 - dist);
+      e.deepest = std::max(e.deepest, 0.1 - dist);
       if (dist < 0.2) {
-        squeeze += 1.0 - std::max(0.0, dist - 0.1) / 0.1;
-        ++pressed;
+        e.squeeze += 1.0 - std::max(0.0, dist - 0.1) / 0.1;
+        ++e.pressed;
       }
     }
-  ASSERT_GT(pressed, 100u);
-  EXPECT_GT(deepest, 0.05) << "the long yarns pass through the layers";
-  EXPECT_NEAR(contacts.deepest(c), deepest, 1e-6);  // (a pair's reach is kept as a float)
-  EXPECT_NEAR(contacts.compression(c), squeeze / static_cast<double>(pressed), 1e-6);
+  e.squeeze /= static_cast<double>(std::max<std::size_t>(e.pressed, 1));
+  return e;
+}
+
+// A few segments far longer than the rest (a machine-knit hat's 2.4 mm against a mean of
+// 0.33) no longer size the contact grid's cell: the cell allows for twice the mean and
+// the long ones search as far as they reach. Every pair is still found: the deepest
+// overlap and the mean squeeze of the listed pairs are those of every pair, counted one
+// by one. Short yarns in three layers; two long ones across them, one through the
+// middle layer's yarns near its ends, far from its midpoint.
+TEST(Relax, LongSegmentsAmongShortOnesFindEveryPair) {
+  relax::Chains c;
+  auto add_piece = [&](const std::vector<glm::dvec3>& points) { add_yarn(c, points); };
+  for (int layer = 0; layer < 3; ++layer)
+    for (int row = 0; row < 12; ++row) {
+      std::vector<glm::dvec3> yarn;
+      for (int k = 0; k <= 40; ++k) yarn.push_back({0.3 * k, 0.31 * row + 0.05 * layer, 0.17 * (layer - 1) + 0.01 * std::sin(k + row)});
+      add_piece(yarn);
+    }
+  add_piece({{-0.5, 0.2, 0.02}, {2.6, 1.9, -0.03}, {5.7, 3.2, 0.04}, {8.8, 0.1, 0.0}});
+  add_piece({{1.0, 3.6, 0.15}, {4.1, 0.05, -0.1}, {7.0, 3.5, 0.12}});
+  close_yarns(c);
+  relax::Contacts contacts(glm::dvec2(0.0), relax::contact_margin * c.thickest, false, 2);
+  contacts.find(c);
+  const EveryPair every = every_pair(c);
+  ASSERT_GT(every.pressed, 100u);
+  EXPECT_GT(every.deepest, 0.05) << "the long yarns pass through the layers";
+  EXPECT_NEAR(contacts.deepest(c), every.deepest, 1e-6);  // (a pair's reach is kept as a float)
+  EXPECT_NEAR(contacts.compression(c), every.squeeze, 1e-6);
+}
+
+// Where few points have moved past half the margin, find() searches only their segments
+// again (Contacts::refind): the rest of the list stands, and the pairs found again are
+// kept to twice the margin. No pair that touches may be missed: after each of a dozen
+// rounds of a few points pushed into the layer beside them (some of them again and
+// again) and the fabric scaled as the size's boost scales it, the listed pairs' deepest
+// overlap and mean squeeze are those of every pair counted one by one. (Each of its parts
+// was taken out in turn, and the test failed: the moved segments searched among each
+// other, and the full search's grid asked where its points are now.)
+TEST(Relax, SearchingOnlyTheMovedSegmentsAgainMissesNoPair) {
+  relax::Chains c;
+  auto add_piece = [&](const std::vector<glm::dvec3>& points) { add_yarn(c, points); };
+  for (int layer = 0; layer < 3; ++layer)
+    for (int row = 0; row < 12; ++row) {
+      std::vector<glm::dvec3> yarn;
+      for (int k = 0; k <= 40; ++k) yarn.push_back({0.3 * k, 0.31 * row + 0.05 * layer, 0.2 * (layer - 1) + 0.01 * std::sin(k + row)});
+      add_piece(yarn);
+    }
+  close_yarns(c);
+  relax::Contacts contacts(glm::dvec2(0.0), relax::contact_margin * c.thickest, false, 2);
+  contacts.find(c);
+  std::uint32_t seed = 12345;
+  auto next = [&]() { return seed = seed * 1664525u + 1013904223u; };
+  double deepest_seen = 0.0;
+  for (int round = 0; round < 12; ++round) {
+    // Three points of the middle layer's first rows (so some are moved again) pushed a
+    // core radius and more toward the layer in front, each with its neighbours, and the
+    // front layer's point facing each toward it: pairs of two moved segments.
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t row = next() % 4, along = 2 + next() % 36;
+      for (const std::size_t yarn : {12 + row, 24 + row}) {
+        const std::size_t i = c.first[yarn] + along;
+        // (Never past z = +-0.07 from the middle of the 0.2 between the layers: they
+        // press into each other, but neither passes through, which would count as a
+        // crossing kept, not as a distance.)
+        const double toward = yarn < 24 ? 1.0 : -1.0, dz = toward * (0.03 + 0.01 * (next() % 4));
+        const double dy = 0.02 * (static_cast<int>(next() % 5) - 2);
+        for (const std::size_t j : {i - 1, i, i + 1}) {
+          const double share = j == i ? 1.0 : 0.5;
+          c.pos[j] += glm::dvec3(0.0, share * dy, share * dz);
+          c.pos[j].z = toward > 0.0 ? std::min(c.pos[j].z, 0.065) : std::max(c.pos[j].z, 0.135);
+        }
+      }
+    }
+    // And two of its next rows toward the layer behind, which stays where it was: pairs
+    // of a moved segment and one found only in the full search's grid.
+    for (int k = 0; k < 2; ++k) {
+      const std::size_t i = c.first[16 + next() % 4] + 2 + next() % 36;
+      const double dz = -(0.06 + 0.01 * (next() % 4));
+      for (const std::size_t j : {i - 1, i, i + 1}) c.pos[j].z = std::max(c.pos[j].z + (j == i ? 1.0 : 0.5) * dz, -0.13);
+    }
+    // The size's move: the width grows by 1% about the middle (a sweep's most).
+    const double centre = 6.0, grow = 0.01;
+    auto move = [&](glm::dvec3& p) { p.x += grow * (p.x - centre); };
+    for (auto& p : c.pos) move(p);
+    contacts.moved(move, glm::dvec2(1.0 + grow, 1.0));
+    if (contacts.stale(c)) contacts.find(c);
+    const EveryPair every = every_pair(c);
+    deepest_seen = std::max(deepest_seen, every.deepest);
+    ASSERT_NEAR(contacts.deepest(c), every.deepest, 1e-6) << "round " << round;  // (a pair's reach is kept as a float)
+    ASSERT_NEAR(contacts.compression(c), every.squeeze, 1e-6) << "round " << round;
+  }
+  EXPECT_GT(deepest_seen, 0.02) << "the moved points press into the layer beside them";
+  EXPECT_GE(contacts.refinds(), 6u) << "the moved segments were searched again, not all";
+  EXPECT_EQ(contacts.full_finds(), 1u);
 }
 
 // Two segments of one yarn that share a point are never a contact, however long: no push

@@ -84,13 +84,19 @@ TEST(Tiles, ARelaxedRepeatIsPlacedAcrossTheInteriorAndTheEdgesStayPlain) {
   EXPECT_EQ(tiles.primitives.size(), 1u);
   EXPECT_FALSE(f.mesh.primitives.empty());
   // Drawn, it spans the box the same fabric meshed whole does (the same curves, cut), and
-  // each placed tile is about one period from the next.
+  // each placed tile is about one period from the next. The rings round the curves turn
+  // differently in the two (a tile's seam is set at its cut): where a 6-sided ring of the
+  // 1 mm yarn shows a vertex in one and a side in the other, the box differs by
+  // r (1 - cos 30 deg) = 0.067 mm.
   const Fabric whole = compile(small_jersey(), relaxed_options(Instancing::automatic));
   ASSERT_FALSE(whole.instanced);
+  ASSERT_EQ(whole.pieces.size(), f.pieces.size());
+  for (std::size_t i = 0; i < f.pieces.size(); ++i)
+    ASSERT_EQ(whole.pieces[i].curve.curve.points, f.pieces[i].curve.curve.points) << "piece " << i;
   const mesh::Bounds box = mesh::bounds(f.mesh), whole_box = mesh::bounds(whole.mesh);
   for (int k = 0; k < 3; ++k) {
-    EXPECT_NEAR(box.min[k], whole_box.min[k], 0.05);
-    EXPECT_NEAR(box.max[k], whole_box.max[k], 0.05);
+    EXPECT_NEAR(box.min[k], whole_box.min[k], 0.07);
+    EXPECT_NEAR(box.max[k], whole_box.max[k], 0.07);
   }
   std::vector<float> xs;
   for (const auto& t : tiles.translations) xs.push_back(t.x);

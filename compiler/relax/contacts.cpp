@@ -94,17 +94,24 @@ double Contacts::separation(const Chains& c, const Pair& p, glm::dvec3& push, do
   return dist;
 }
 
+const Contacts::Pair* Contacts::listed(const Pair& key) const {
+  const auto again = std::lower_bound(extra_.begin(), extra_.end(), key, key_before);
+  if (again != extra_.end() && !key_before(key, *again)) return &*again;
+  const auto it = std::lower_bound(by_segments_.begin(), by_segments_.end(), key,
+                                   [&](std::uint32_t x, const Pair& y) { return key_before(pairs_[x], y); });
+  if (it == by_segments_.end()) return nullptr;
+  const Pair& q = pairs_[*it];
+  return !key_before(key, q) && !(q.held & dead) ? &q : nullptr;
+}
+
 std::int8_t Contacts::neighbours_side(const Pair& p) const {
   for (int da = -1; da <= 1; ++da)
     for (int db = -1; db <= 1; ++db) {
       if ((da == 0 && db == 0) || (da < 0 && p.a == 0) || (db < 0 && p.b == 0)) continue;
       const Pair key{static_cast<std::uint32_t>(static_cast<int>(p.a) + da), static_cast<std::uint32_t>(static_cast<int>(p.b) + db),
                      p.sx, p.sy, 0, 0, 0.0f, 0.0f};
-      const auto it = std::lower_bound(by_segments_.begin(), by_segments_.end(), key,
-                                       [&](std::uint32_t x, const Pair& y) { return key_before(pairs_[x], y); });
-      if (it == by_segments_.end()) continue;
-      const Pair& q = pairs_[*it];
-      if (!key_before(key, q) && q.side != 0) return q.side;
+      const Pair* q = listed(key);
+      if (q && q->side != 0) return q->side;
     }
   return 0;
 }
@@ -117,6 +124,7 @@ double Contacts::gap(const Chains& c, const Pair& p) const {
 
 double Contacts::push_apart(Chains& c, double skin, double scale, bool shells, Strain* strain) {
   auto push = [&](Pair& p, double& deepest, Strain& asked) {
+    if (p.held & dead) return;
     const std::size_t a = p.a, b = p.b;
     const glm::dvec3 offset = shift(p);
     const double reach = p.reach;
@@ -156,6 +164,9 @@ double Contacts::push_apart(Chains& c, double skin, double scale, bool shells, S
       c.pos[b + 1] -= lambda * w[3] * normal;
     }
   };
+  double first_deepest = 0.0;
+  Strain first_asked;
+  for (Pair& p : extra_) push(p, first_deepest, first_asked);
   const std::size_t strips = strip_first_.size() - 1;
   std::vector<double> per_strip(strips, 0.0);
   std::vector<Strain> strain_per_strip(strain ? strips : 0);
@@ -174,6 +185,8 @@ double Contacts::push_apart(Chains& c, double skin, double scale, bool shells, S
   Strain asked;
   for (std::size_t i = across_first_; i < pairs_.size(); ++i) push(pairs_[i], deepest, asked);
   for (double d : per_strip) deepest = std::max(deepest, d);
+  deepest = std::max(deepest, first_deepest);
+  if (strain) strain->add(first_asked);
   if (strain) {  // summed in strip order: the same for any thread count
     for (const Strain& s : strain_per_strip) strain->add(s);
     strain->add(asked);
@@ -183,25 +196,41 @@ double Contacts::push_apart(Chains& c, double skin, double scale, bool shells, S
 
 double Contacts::deepest(const Chains& c) const {
   double worst = 0.0;
-  for (const Pair& p : pairs_) worst = std::max(worst, -gap(c, p));
+  for (const auto* list : {&pairs_, &extra_})
+    for (const Pair& p : *list)
+      if (!(p.held & dead)) worst = std::max(worst, -gap(c, p));
   return worst;
 }
 
 double Contacts::compression(const Chains& c) const {
   double sum = 0.0;
   std::size_t pressed = 0;
-  for (const Pair& p : pairs_) {
-    const double dist = gap(c, p) + p.reach;
-    if (dist >= p.shell) continue;
-    sum += 1.0 - std::max(0.0, dist - p.reach) / (p.shell - p.reach);
-    ++pressed;
-  }
+  for (const auto* list : {&pairs_, &extra_})
+    for (const Pair& p : *list) {
+      if (p.held & dead) continue;
+      const double dist = gap(c, p) + p.reach;
+      if (dist >= p.shell) continue;
+      sum += 1.0 - std::max(0.0, dist - p.reach) / (p.shell - p.reach);
+      ++pressed;
+    }
   return pressed > 0 ? sum / static_cast<double>(pressed) : 0.0;
 }
 
 void Contacts::moved(const std::function<void(glm::dvec3&)>& move, glm::dvec2 growth) {
   for (auto& p : built_at_) move(p);
   period_ *= growth;
+  // The move scales each axis about a centre (relax.cpp, boost_size): where the grid's
+  // points are now follows from where it takes the origin and the axes' unit points.
+  glm::dvec3 origin(0.0), scale(1.0);
+  move(origin);
+  for (int axis = 0; axis < 3; ++axis) {
+    glm::dvec3 unit(0.0);
+    unit[axis] = 1.0;
+    move(unit);
+    scale[axis] = unit[axis] - origin[axis];
+  }
+  grid_offset_ = scale * grid_offset_ + origin;
+  grid_scale_ *= scale;
 }
 
 }  // namespace knitc::relax

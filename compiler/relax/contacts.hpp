@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -39,13 +40,14 @@ class Contacts {
   // period: the swatch's repeat in x and y, mm (0: not periodic that way). margin, mm.
   // round: the fabric is a tube (work in the round), whose crossings are not kept by side.
   // threads: how many to use, >= 1.
-  Contacts(glm::dvec2 period, double margin, bool round, int threads)
-      : period_(period), margin_(margin), round_(round), threads_(threads) {}
+  Contacts(glm::dvec2 period, double margin, bool round, int threads);
+  ~Contacts();
 
   // Finds every pair of contactable segments whose free surfaces are less than the margin
   // apart: of different pieces, or of one piece more than 1.8 free diameters apart along it
   // (a little inside the two of measure::deepest_penetration, so that every pair it counts
-  // is kept apart).
+  // is kept apart). Where few points have moved, only their segments are searched again
+  // (see refind in contacts_search.cpp): the pairs that can touch are the same.
   void find(const Chains& chains);
   // Whether a point has moved half the margin since find(), so a pair may be missing.
   bool stale(const Chains& chains) const;
@@ -64,6 +66,9 @@ class Contacts {
   void moved(const std::function<void(glm::dvec3&)>& move, glm::dvec2 growth);
 
   glm::dvec2 period() const { return period_; }
+  // How many finds searched only the moved segments again (refind), and how many searched all.
+  std::size_t refinds() const { return refinds_; }
+  std::size_t full_finds() const { return full_finds_; }
 
  private:
   struct Pair {
@@ -77,6 +82,9 @@ class Contacts {
     float reach;           // mm, the sum of the two core radii
     float shell;           // mm, the sum of the two free radii
   };
+  // In Pair::held: a pair of the full search's list whose segment has been searched
+  // again since (refind): no longer worked, its successor is in extra_.
+  static constexpr std::uint8_t dead = 16;
   // Pairs in (a, b, image) order: how a pair is looked up.
   static bool key_before(const Pair& x, const Pair& y) {
     return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.sx != y.sx ? x.sx < y.sx : x.sy < y.sy;
@@ -93,6 +101,17 @@ class Contacts {
   struct Grid;
   Grid grid_of(const Chains& c) const;
   std::vector<std::vector<Pair>> close_pairs(const Chains& c, const Grid& grid, const std::vector<Pair>& previous) const;
+  // Whether segments a and bs (b's image sx, sy on) make a pair to list within `margin`
+  // (a < bs, each half length given), filling `pair`; known_side(pair): its side as last
+  // listed, 0 if none.
+  template <class KnownSide>
+  bool pair_of(const Chains& c, std::size_t a, const glm::dvec3& ma, double half_a, std::size_t bs, double half_b,
+               std::int8_t sx, std::int8_t sy, double margin, KnownSide&& known_side, Pair& pair) const;
+  bool refind(const Chains& c);
+  // refind searches again while the segments searched again since the full search are at
+  // most this share of the points (or 256).
+  static constexpr std::size_t refind_share = 64;
+  const Pair* listed(const Pair& key) const;  // the live pair of that key, or null
   void file_by_strips(const Chains& c, const Grid& grid, const std::vector<std::vector<Pair>>& found);
   double gap(const Chains& c, const Pair& p) const;
 
@@ -105,6 +124,14 @@ class Contacts {
   std::size_t across_first_ = 0;                   // pairs_[across_first_ ..) join distant strips: worked alone
   std::vector<glm::dvec3> built_at_;
   std::vector<std::uint32_t> by_segments_;  // pairs_ indices in (a, b, image) order
+  // Since the last full search (refind):
+  std::unique_ptr<Grid> grid_;                     // its grid, of the segments where they were then
+  glm::dvec3 grid_scale_{1.0}, grid_offset_{0.0};  // where a point then is now: scale * p + offset (the size's moves)
+  std::vector<std::uint8_t> wandered_;             // per segment: searched again (its place in grid_ is stale)
+  std::vector<std::uint32_t> wanderers_;           // the same, listed
+  std::vector<std::uint32_t> pairs_of_first_, pairs_of_;  // each segment's pairs_ (as a or b)
+  std::vector<Pair> extra_;                        // the pairs found again, in (a, b, image) order: worked after the rest
+  std::size_t refinds_ = 0, full_finds_ = 0;
 };
 
 // The closest points of segments p0p1 and q0q1: parameters s, t in [0, 1] (Ericson,

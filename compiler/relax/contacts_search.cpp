@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -38,6 +39,7 @@ struct Contacts::Grid {
   // meets each segment as a candidate some 75 times, and its square root was most of a
   // candidate's cost.
   std::vector<double> half;
+  double longest = 0.0;  // the longest contactable segment
   bool empty() const { return lo.x > hi.x; }
   bool free_near(const glm::i64vec3& cell) const {
     for (int dx = -1; dx <= 1; ++dx)
@@ -47,6 +49,10 @@ struct Contacts::Grid {
     return false;
   }
 };
+
+Contacts::Contacts(glm::dvec2 period, double margin, bool round, int threads)
+    : period_(period), margin_(margin), round_(round), threads_(threads) {}
+Contacts::~Contacts() = default;
 
 namespace {
 bool held_segment(const Chains& c, std::size_t i) { return c.inv_mass[i] == 0.0 && c.inv_mass[i + 1] == 0.0; }
@@ -69,6 +75,7 @@ Contacts::Grid Contacts::grid_of(const Chains& c) const {
     g.lo = glm::min(g.lo, glm::dvec2(m));
     g.hi = glm::max(g.hi, glm::dvec2(m));
   }
+  g.longest = longest;
   if (g.empty()) return g;
   // A pair's midpoints lie at most free diameters (the shells' reach), the margin and the
   // two half lengths apart: a cell that wide finds every pair in the cells round it. Sized
@@ -109,6 +116,35 @@ Contacts::Grid Contacts::grid_of(const Chains& c) const {
   return g;
 }
 
+// Inlined into each search, as the pair test it was: a call a candidate cost 6%.
+template <class KnownSide>
+[[gnu::always_inline]] inline bool Contacts::pair_of(const Chains& c, std::size_t a, const glm::dvec3& ma, double half_a,
+                                                     std::size_t bs, double half_b, std::int8_t sx, std::int8_t sy,
+                                                     double margin, KnownSide&& known_side, Pair& pair) const {
+  // (The tests are all needed for a pair: the cheapest, the midpoints' distance, first.)
+  const glm::dvec3 offset(sx * period_.x, sy * period_.y, 0.0);
+  const glm::dvec3 between = ma - midpoint(c, bs) - offset;
+  const double bound = c.shell[a] + c.shell[bs] + margin + half_a + half_b;
+  if (glm::dot(between, between) > bound * bound) return false;
+  // Two segments that share a point cannot be pushed apart: not a contact, however
+  // long they are (where the curve through two close data points swings wide,
+  // refine's segments along it are long enough to pass the test above).
+  if (bs == a + 1 && sx == 0 && sy == 0 && c.segment[a] && c.piece[a] == c.piece[bs]) return false;
+  // One stretch of yarn, not a contact: of one piece, close along it (or along its
+  // image, a period on, when its yarn runs on into the next tile).
+  if (sy == 0 && c.piece[a] == c.piece[bs] &&
+      std::abs(along_mid(c, a) - along_mid(c, bs) - sx * c.along_period[c.piece[a]]) <= 1.8 * (c.shell[a] + c.shell[bs]))
+    return false;
+  const auto held = static_cast<std::uint8_t>((c.inv_mass[a] == 0.0 ? 1 : 0) | (c.inv_mass[a + 1] == 0.0 ? 2 : 0) |
+                                              (c.inv_mass[bs] == 0.0 ? 4 : 0) | (c.inv_mass[bs + 1] == 0.0 ? 8 : 0));
+  if (held == 15) return false;  // neither can move: nothing to push
+  pair = Pair{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(bs), sx, sy, held, 0,
+              static_cast<float>(c.radius[a] + c.radius[bs]), static_cast<float>(c.shell[a] + c.shell[bs])};
+  const std::int8_t side = known_side(pair);
+  pair.side = side != 0 ? side : side_of(c, pair);
+  return gap(c, pair) + pair.reach - pair.shell < margin;
+}
+
 std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, const Grid& grid,
                                                                const std::vector<Pair>& previous) const {
   const std::size_t n = c.pos.size();
@@ -124,36 +160,15 @@ std::vector<std::vector<Contacts::Pair>> Contacts::close_pairs(const Chains& c, 
   };
   // The pair of segments a < b, b's image (sx, sy) periods on, if it is one to keep;
   // `mine`, a's previous pairs (null: looked up here, for a pair that is close).
-  // (`ma`, `half_a`: a's midpoint and half length, made once for its many candidates;
-  // inlined into each search, as the pair test it was: a call a candidate cost 6%.)
+  // (`ma`, `half_a`: a's midpoint and half length, made once for its many candidates.)
   auto pair_of = [&](std::size_t a, const glm::dvec3& ma, double half_a, std::size_t bs, std::int8_t sx, std::int8_t sy,
                      const Known* known_pairs, Pair& pair) __attribute__((always_inline)) {
-    // Two segments that share a point cannot be pushed apart: not a contact, however
-    // long they are (where the curve through two close data points swings wide,
-    // refine's segments along it are long enough to pass the test below).
-    // (The tests are all needed for a pair: the cheapest, the midpoints' distance, first.)
-    const glm::dvec3 offset(sx * period_.x, sy * period_.y, 0.0);
-    const glm::dvec3 between = ma - midpoint(c, bs) - offset;
-    const double bound = c.shell[a] + c.shell[bs] + margin_ + half_a + grid.half[bs];
-    if (glm::dot(between, between) > bound * bound) return false;
-    if (bs == a + 1 && sx == 0 && sy == 0 && c.segment[a] && c.piece[a] == c.piece[bs]) return false;
-    // One stretch of yarn, not a contact: of one piece, close along it (or along its
-    // image, a period on, when its yarn runs on into the next tile).
-    if (sy == 0 && c.piece[a] == c.piece[bs] &&
-        std::abs(along_mid(c, a) - along_mid(c, bs) - sx * c.along_period[c.piece[a]]) <= 1.8 * (c.shell[a] + c.shell[bs]))
-      return false;
-    const auto held = static_cast<std::uint8_t>((c.inv_mass[a] == 0.0 ? 1 : 0) | (c.inv_mass[a + 1] == 0.0 ? 2 : 0) |
-                                                (c.inv_mass[bs] == 0.0 ? 4 : 0) | (c.inv_mass[bs + 1] == 0.0 ? 8 : 0));
-    if (held == 15) return false;  // neither can move: nothing to push
-    pair = Pair{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(bs), sx, sy, held, 0,
-                static_cast<float>(c.radius[a] + c.radius[bs]), static_cast<float>(c.shell[a] + c.shell[bs])};
-    const Known mine = known_pairs ? *known_pairs : known_of(a);
-    const auto known = std::lower_bound(mine.first, mine.second, pair, key_before);
-    if (known != mine.second && !key_before(pair, *known) && known->side != 0)
-      pair.side = known->side;
-    else
-      pair.side = side_of(c, pair);
-    return gap(c, pair) + pair.reach - pair.shell < margin_;
+    auto known_side = [&](const Pair& key) -> std::int8_t {
+      const Known mine = known_pairs ? *known_pairs : known_of(a);
+      const auto known = std::lower_bound(mine.first, mine.second, key, key_before);
+      return known != mine.second && !key_before(key, *known) ? known->side : 0;
+    };
+    return this->pair_of(c, a, ma, half_a, bs, grid.half[bs], sx, sy, margin_, known_side, pair);
   };
   // Each block of segments its own list, joined in order: the same list for any thread count.
   const std::size_t blocks = std::max<std::size_t>(1, std::min<std::size_t>(64, n / 4096));
@@ -267,19 +282,166 @@ void Contacts::file_by_strips(const Chains& c, const Grid& grid, const std::vect
 }
 
 void Contacts::find(const Chains& c) {
+  if (!built_at_.empty() && built_at_.size() == c.pos.size() && grid_ && refind(c)) return;
+  ++full_finds_;
   built_at_ = c.pos;
-  // The sides of the pairs listed so far, to look up by (a, b, image).
-  std::vector<Pair> previous(pairs_.size());
-  for (std::size_t k = 0; k < by_segments_.size(); ++k) previous[k] = pairs_[by_segments_[k]];
+  // The sides of the pairs listed so far, to look up by (a, b, image): the full list's
+  // live pairs and those found again since (their keys apart).
+  std::vector<Pair> live;
+  live.reserve(pairs_.size());
+  for (const std::uint32_t k : by_segments_)
+    if (!(pairs_[k].held & dead)) live.push_back(pairs_[k]);
+  std::vector<Pair> previous;
+  previous.reserve(live.size() + extra_.size());
+  std::merge(live.begin(), live.end(), extra_.begin(), extra_.end(), std::back_inserter(previous), key_before);
+  live = {};
   pairs_.clear();
-  const Grid grid = grid_of(c);
-  if (grid.empty()) {  // nothing takes part
+  extra_.clear();
+  wandered_.clear();
+  wanderers_.clear();
+  pairs_of_first_.clear();
+  pairs_of_.clear();
+  grid_scale_ = glm::dvec3(1.0);
+  grid_offset_ = glm::dvec3(0.0);
+  grid_ = std::make_unique<Grid>(grid_of(c));
+  if (grid_->empty()) {  // nothing takes part
     strip_first_.assign(1, 0);
     across_first_ = 0;
     by_segments_.clear();
+    grid_.reset();
     return;
   }
-  file_by_strips(c, grid, close_pairs(c, grid, previous));
+  file_by_strips(c, *grid_, close_pairs(c, *grid_, previous));
+}
+
+// A long relaxation's late sweeps move few points half the margin (one to a few hundred
+// of a machine program's 300,000 or a hat's 2.6 million), and a full search each time
+// was most of such a sweep. So only the segments those points end are searched again:
+// their pairs in the full list are marked dead and what is found goes to extra_.
+//
+// Why no pair that can touch is missed: each point's built_at is where it was when all
+// its segments' pairs were last tested. A pair tested by the full search had every point
+// within half the margin of there, and each point moves at most half the margin more
+// before the list is stale: the margin holds. A pair tested again here has its moved
+// segment's points at their new built_at, but the other's may be half the margin from
+// theirs already, and each may go half the margin further: so it is kept up to twice the
+// margin. The candidates: a segment not searched again since the full search lies within
+// half the margin of its place in that search's grid (moved by the size's moves since),
+// so that grid is asked, a cell further; the ones searched again are indexed afresh.
+//
+// False (nothing changed) when so many have moved that a full search is as cheap.
+bool Contacts::refind(const Chains& c) {
+  const std::size_t n = c.pos.size();
+  const double limit = 0.25 * margin_ * margin_;  // half the margin, squared
+  std::vector<std::uint32_t> moved_points;
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec3 moved = c.pos[i] - built_at_[i];
+    if (glm::dot(moved, moved) > limit) moved_points.push_back(static_cast<std::uint32_t>(i));
+  }
+  if (moved_points.empty()) return true;
+  // The segments they end, each once, ascending.
+  std::vector<std::uint32_t> segments;
+  auto add = [&](std::uint32_t s) {
+    if (s + 1 < n && c.contactable[s] && (segments.empty() || segments.back() < s)) segments.push_back(s);
+  };
+  for (const std::uint32_t i : moved_points) {
+    if (i > 0) add(i - 1);
+    add(i);
+  }
+  if (wandered_.empty()) wandered_.assign(n, 0);
+  std::size_t fresh_wanderers = 0;
+  for (const std::uint32_t s : segments) fresh_wanderers += wandered_[s] ? 0 : 1;
+  if (wanderers_.size() + fresh_wanderers > std::max<std::size_t>(256, n / refind_share)) return false;
+
+  if (pairs_of_first_.empty()) {  // each segment's pairs in the full list, as a or b
+    pairs_of_first_.assign(n + 1, 0);
+    for (const Pair& p : pairs_) ++pairs_of_first_[p.a + 1], ++pairs_of_first_[p.b + 1];
+    for (std::size_t s = 0; s < n; ++s) pairs_of_first_[s + 1] += pairs_of_first_[s];
+    pairs_of_.resize(pairs_of_first_[n]);
+    std::vector<std::uint32_t> next(pairs_of_first_.begin(), pairs_of_first_.end() - 1);
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+      pairs_of_[next[pairs_[k].a]++] = static_cast<std::uint32_t>(k);
+      pairs_of_[next[pairs_[k].b]++] = static_cast<std::uint32_t>(k);
+    }
+  }
+  std::vector<std::uint8_t> searched(n, 0);  // now
+  for (const std::uint32_t s : segments) {
+    searched[s] = 1;
+    if (!wandered_[s]) wandered_[s] = 1, wanderers_.push_back(s);
+  }
+  // The sides as last listed, before the old pairs go.
+  const std::vector<Pair> before = extra_;
+  auto known_side = [&](const Pair& key) -> std::int8_t {
+    const auto again = std::lower_bound(before.begin(), before.end(), key, key_before);
+    if (again != before.end() && !key_before(key, *again)) return again->side;
+    const auto it = std::lower_bound(by_segments_.begin(), by_segments_.end(), key,
+                                     [&](std::uint32_t x, const Pair& y) { return key_before(pairs_[x], y); });
+    return it != by_segments_.end() && !key_before(key, pairs_[*it]) && !(pairs_[*it].held & dead) ? pairs_[*it].side : 0;
+  };
+  // The wandered segments where they are now, images too, in a grid of the full one's cell.
+  const Grid& grid = *grid_;
+  const double cell = grid.columns.cell();
+  spatial::Columns near_again(cell);
+  double longest_again = 0.0;
+  for (const std::uint32_t s : wanderers_) {
+    const glm::dvec3 m = midpoint(c, s);
+    longest_again = std::max(longest_again, glm::distance(c.pos[s], c.pos[s + 1]));
+    for (int sx = -1; sx <= 1; ++sx) {
+      if (sx != 0 && period_.x == 0.0) continue;
+      for (int sy = -1; sy <= 1; ++sy) {
+        if (sy != 0 && period_.y == 0.0) continue;
+        near_again.add(near_again.cell_of(m + glm::dvec3(sx * period_.x, sy * period_.y, 0.0)), s, static_cast<std::int8_t>(sx),
+                       static_cast<std::int8_t>(sy));
+      }
+    }
+  }
+  near_again.index();
+  const double wide = 2.0 * margin_;
+  const double shrink = std::min({grid_scale_.x, grid_scale_.y, grid_scale_.z});
+  const double grow = std::max({grid_scale_.x, grid_scale_.y, grid_scale_.z});
+  constexpr std::size_t block = 64;
+  std::vector<std::vector<Pair>> found((segments.size() + block - 1) / block);
+  parallel_for(found.size(), threads_, [&](std::size_t k) {
+    for (std::size_t i = k * block; i < std::min(segments.size(), (k + 1) * block); ++i) {
+      const std::size_t a = segments[i];
+      const glm::dvec3 ma = midpoint(c, a);
+      const double half_a = 0.5 * glm::distance(c.pos[a], c.pos[a + 1]);
+      auto visit = [&](const spatial::Columns::Entry& b) {
+        const std::size_t bs = b.item;
+        if (bs == a || (bs < a && searched[bs])) return;  // each pair once: from its first segment if both are searched
+        const double half_b = 0.5 * glm::distance(c.pos[bs], c.pos[bs + 1]);
+        Pair pair;
+        const bool kept = bs > a ? pair_of(c, a, ma, half_a, bs, half_b, b.sx, b.sy, wide, known_side, pair)
+                                 : pair_of(c, bs, midpoint(c, bs), half_b, a, half_a, static_cast<std::int8_t>(-b.sx),
+                                           static_cast<std::int8_t>(-b.sy), wide, known_side, pair);
+        if (kept) found[k].push_back(pair);
+      };
+      // Within reach now: shells, twice the margin, the two half lengths. An unwandered
+      // segment is within half the margin of its place then, its half length too.
+      const double reach_now = c.thickest + wide + half_a;
+      const double then = (reach_now + 0.5 * grid.longest * grow + 1.5 * margin_) / shrink;
+      grid.columns.near(grid.columns.cell_of((ma - grid_offset_) / grid_scale_), static_cast<int>(std::ceil(then / cell)),
+                        [&](const spatial::Columns::Entry& b) {
+                          if (!wandered_[b.item]) visit(b);
+                        });
+      near_again.near(near_again.cell_of(ma), static_cast<int>(std::ceil((reach_now + 0.5 * longest_again) / cell)), visit);
+    }
+  });
+  std::vector<Pair> fresh;
+  for (const auto& list : found) fresh.insert(fresh.end(), list.begin(), list.end());
+  std::sort(fresh.begin(), fresh.end(), key_before);  // each key once: the same order always
+  // The old pairs of the searched segments go.
+  for (const std::uint32_t s : segments)
+    for (std::uint32_t k = pairs_of_first_[s]; k < pairs_of_first_[s + 1]; ++k) pairs_[pairs_of_[k]].held |= dead;
+  std::vector<Pair> kept;
+  kept.reserve(extra_.size() + fresh.size());
+  for (const Pair& p : extra_)
+    if (!searched[p.a] && !searched[p.b]) kept.push_back(p);
+  extra_.clear();
+  std::merge(kept.begin(), kept.end(), fresh.begin(), fresh.end(), std::back_inserter(extra_), key_before);
+  for (const std::uint32_t i : moved_points) built_at_[i] = c.pos[i];
+  ++refinds_;
+  return true;
 }
 
 bool Contacts::stale(const Chains& c) const {
