@@ -23,24 +23,31 @@ struct Point {
   std::uint32_t piece;
 };
 
-// The centrelines as points no more than a quarter diameter apart.
+// The centrelines as points no more than a quarter diameter apart, and none within a
+// 256th of a diameter of the one before: samples piled up in one place (a curve through
+// data points a nanometre apart was sampled 3 million times in one span) would fill one
+// cell, and the search below compares a cell's points pair by pair.
 std::vector<Point> centreline_points(const Pattern& pattern, std::span<const curves::CurvePiece> pieces) {
   std::vector<Point> points;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const curves::CurvePiece& p = pieces[i];
     const double d = pattern.yarns[p.path.yarn].diameter, core = 0.5 * pattern.yarns[p.path.yarn].core_diameter;
     const auto& o = p.frames.origin;
+    const std::size_t first = points.size();
+    auto add = [&](const glm::dvec3& at, double along) {
+      if (points.size() > first && glm::distance(points.back().at, at) < d / 256.0) return;
+      points.push_back({at, along, 0.5 * d, core, static_cast<std::uint32_t>(i)});
+    };
     for (std::size_t s = 0; s < o.size(); ++s) {
       if (s > 0) {
         const double step = glm::distance(o[s - 1], o[s]);
         const int n = static_cast<int>(std::ceil(step / (0.25 * d)));
         for (int k = 1; k < n; ++k) {
           const double t = static_cast<double>(k) / n;
-          points.push_back({o[s - 1] + t * (o[s] - o[s - 1]), p.arc_length[s - 1] + t * (p.arc_length[s] - p.arc_length[s - 1]),
-                            0.5 * d, core, static_cast<std::uint32_t>(i)});
+          add(o[s - 1] + t * (o[s] - o[s - 1]), p.arc_length[s - 1] + t * (p.arc_length[s] - p.arc_length[s - 1]));
         }
       }
-      points.push_back({o[s], p.arc_length[s], 0.5 * d, core, static_cast<std::uint32_t>(i)});
+      add(o[s], p.arc_length[s]);
     }
   }
   return points;
