@@ -1,6 +1,8 @@
 // The command line's words (commands.hpp).
 #include "commands.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -233,6 +235,24 @@ int refuse_bad_outputs(const Commands& c) {
       }
       seen.emplace_back(id, *output);
     }
+  }
+  // build writes a glTF binary whatever the name: a name that says another format would
+  // get a file no reader of that format opens.
+  if (!c.build.output.empty() && c.build.output != "-") {
+    std::string ext = std::filesystem::path(c.build.output).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    const std::pair<const char*, const char*> others[] = {
+        {".json", "the centrelines as JSON are --centreline FILE.json"},
+        {".gltf", "name it .glb: knitc writes the binary form, which glTF readers open"},
+        {".png", "pictures are knitc render PATTERN -o FILE.png"},
+        {".k", "machine programs are knitc knitout PATTERN -o FILE.k"},
+        {".knitout", "machine programs are knitc knitout PATTERN -o FILE.k"},
+        {".lua", "that names a pattern script"}};
+    for (const auto& [other, hint] : others)
+      if (ext == other) {
+        report("knitc: build writes a glTF binary (.glb), not " + ext + ": " + hint);
+        return exit_usage;
+      }
   }
   for (const Args* args : {&c.build, &c.render}) {
     if (args->output == "-" && ::isatty(STDOUT_FILENO) != 0) {

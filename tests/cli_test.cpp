@@ -211,12 +211,14 @@ TEST(Cli, CommandLineMisuseExitsTwo) {
         "render patterns/jersey.lua -o " + quoted(dir / "x.png") + " --size 4294967312x4294967312",
         "render patterns/jersey.lua -o " + quoted(dir / "x.png") + " --size 64x48x", std::string("bench --swatch 10x-5"),
         "build patterns/jersey.lua" + out + " --max-seconds nan",
-        "build patterns/jersey.lua" + out + " --centreline " + quoted(dir / "sub/../x.glb")}) {
+        "build patterns/jersey.lua" + out + " --centreline " + quoted(dir / "sub/../x.glb"),
+        "build patterns/jersey.lua -o " + quoted(dir / "x.json"), "build patterns/jersey.lua -o " + quoted(dir / "x.GLTF"),
+        "build patterns/jersey.lua -o " + quoted(dir / "x.png"), "build patterns/jersey.lua -o " + quoted(dir / "x.k")}) {
     const auto r = test::run_knitc(args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_FALSE(r.err.empty()) << args;
   }
-  EXPECT_FALSE(fs::exists(dir / "x.glb"));
+  for (const char* name : {"x.glb", "x.json", "x.GLTF", "x.png", "x.k"}) EXPECT_FALSE(fs::exists(dir / name)) << name;
   fs::remove_all(dir);
 }
 
