@@ -369,14 +369,10 @@ bool Contacts::refind(const Chains& c) {
     searched[s] = 1;
     if (!wandered_[s]) wandered_[s] = 1, wanderers_.push_back(s);
   }
-  // The sides as last listed, before the old pairs go.
-  const std::vector<Pair> before = extra_;
+  // The sides as last listed (the old pairs go only after the search).
   auto known_side = [&](const Pair& key) -> std::int8_t {
-    const auto again = std::lower_bound(before.begin(), before.end(), key, key_before);
-    if (again != before.end() && !key_before(key, *again)) return again->side;
-    const auto it = std::lower_bound(by_segments_.begin(), by_segments_.end(), key,
-                                     [&](std::uint32_t x, const Pair& y) { return key_before(pairs_[x], y); });
-    return it != by_segments_.end() && !key_before(key, pairs_[*it]) && !(pairs_[*it].held & dead) ? pairs_[*it].side : 0;
+    const Pair* q = listed(key);
+    return q ? q->side : 0;
   };
   // The wandered segments where they are now, images too, in a grid of the full one's cell.
   const Grid& grid = *grid_;
