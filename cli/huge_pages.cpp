@@ -1,10 +1,11 @@
 // Large allocations on huge pages. A garment's arrays (a million and more chain points,
 // samples, vertices) are allocated fresh stage after stage; glibc maps each one anew and
 // the kernel zero-fills it 4 KiB at a time, and on a virtual machine each of those page
-// faults is dear: on the sweater front they took about a third of the run. Asking for
-// transparent huge pages on such blocks (madvise, which the kernel's default "madvise"
-// mode honours) faults them in 2 MiB at a time. Nothing else changes: the memory is
-// malloc's, freed by free, and the contents are the same (docs/performance.md).
+// faults is dear: on the sweater front they took about a third of the run. So blocks of
+// 2 MiB and more ask for transparent huge pages (madvise, which the kernel's default
+// "madvise" mode honours), faulted in 2 MiB at a time, and freed blocks are kept for the
+// next. Nothing else changes: the memory is malloc's, freed by free, and the contents are
+// the same (docs/performance.md).
 //
 // The program's operator new is replaced in the command line only, the one executable a
 // user runs; sanitizer builds keep their own.
@@ -17,6 +18,7 @@
 #endif
 
 #if defined(KNITC_HUGE_PAGES) && defined(__linux__)
+#include <malloc.h>
 #include <sys/mman.h>
 
 #include <cstdint>
@@ -26,12 +28,23 @@
 namespace {
 
 constexpr std::size_t huge_page = std::size_t{2} << 20;
-constexpr std::size_t worth_it = std::size_t{8} << 20;  // smaller blocks come from malloc's heap, already faulted
+constexpr std::size_t worth_it = huge_page;  // a block holding at least one whole huge page, about
+
+// Freed memory kept for the next stage's arrays rather than given back and faulted in
+// again: blocks up to 32 MiB (the most malloc allows) come from its heap, whose free top
+// is given back only past 1 GiB. Set outright, malloc's threshold no longer rises only as
+// blocks are freed, which left the first block of each size a fresh mapping of its own.
+const bool heap_kept = [] {
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  return true;
+}();
 
 void* allocate(std::size_t size) noexcept {
   void* p = std::malloc(size == 0 ? 1 : size);
   if (p && size >= worth_it) {
-    // The whole huge pages inside the block (malloc's large blocks are their own mapping).
+    // The whole huge pages inside the block: of its own mapping past 32 MiB, else of the
+    // heap's, where the advice holds for those pages as they are reused.
     const auto from = (reinterpret_cast<std::uintptr_t>(p) + huge_page - 1) & ~(huge_page - 1);
     const auto to = (reinterpret_cast<std::uintptr_t>(p) + size) & ~(huge_page - 1);
     if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);  // advice: a refusal costs nothing
