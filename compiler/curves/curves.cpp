@@ -98,6 +98,10 @@ CurvePiece trace(yarn_paths::Piece path, const Yarn& yarn, const Options& option
     if (ascending) steps[k] = steps[r];
     else sample(k);
   });
+  std::size_t samples = 1;
+  for (const auto& span : spans) samples += span.size() - 1;
+  piece.samples.reserve(samples);
+  piece.arc_length.reserve(samples);
   piece.samples.push_back(u[0]);
   piece.arc_length.push_back(0.0);
   for (std::size_t k = 0; k < spans.size(); ++k) {
