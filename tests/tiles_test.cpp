@@ -266,6 +266,12 @@ TEST(Tiles, EachFlattenedInstanceLiesOnItsTileInTheFiles) {
   ASSERT_EQ(mi.extensionsRequired, std::vector<std::string>{"EXT_mesh_gpu_instancing"});
   const auto& ext = mi.nodes[1].extensions.at("EXT_mesh_gpu_instancing");
   const auto translations = floats(mi, ext.Get("attributes").Get("TRANSLATION").GetNumberAsInt());
+  // The edges are one instance of their own mesh, in place (one shader program for the
+  // whole fabric in a renderer: gltf.cpp).
+  ASSERT_TRUE(mi.nodes[0].extensions.count("EXT_mesh_gpu_instancing"));
+  const auto edge_place = floats(mi, mi.nodes[0].extensions.at("EXT_mesh_gpu_instancing").Get("attributes").Get("TRANSLATION").GetNumberAsInt());
+  ASSERT_EQ(edge_place.size(), 1u);
+  EXPECT_EQ(edge_place[0], glm::vec3(0.0f));
   const auto edges = floats(mi, mi.meshes[0].primitives[0].attributes.at("POSITION"));
   const auto tile = floats(mi, mi.meshes[static_cast<std::size_t>(mi.nodes[1].mesh)].primitives[0].attributes.at("POSITION"));
   ASSERT_EQ(mf.meshes.size(), 1u);
