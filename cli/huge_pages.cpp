@@ -41,11 +41,13 @@ constexpr std::size_t worth_it = huge_page;  // a block holding at least one who
 std::atomic<std::uintptr_t> heap_advised{0};  // the heap's end, as far as advised
 
 const bool heap_kept = [] {
+#if defined(__GLIBC__)
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
   mallopt(M_TOP_PAD, 64 << 20);
   mallopt(M_ARENA_MAX, 1);
   heap_advised = reinterpret_cast<std::uintptr_t>(sbrk(0));
+#endif
   return true;
 }();
 
@@ -56,6 +58,7 @@ std::uintptr_t down(std::uintptr_t a) { return a & ~(huge_page - 1); }
 // glibc.malloc.hugetlb=1 does, which it reads only from the environment as the program
 // starts). The few pages malloc touched as it grew stay small.
 void advise_heap_growth() {
+  if (heap_advised.load(std::memory_order_relaxed) == 0) return;  // not glibc's heap, as set above
   const auto top = reinterpret_cast<std::uintptr_t>(sbrk(0));
   std::uintptr_t seen = heap_advised.load(std::memory_order_relaxed);
   if (top <= seen || !heap_advised.compare_exchange_strong(seen, top)) return;  // none, or another thread's to advise
