@@ -252,6 +252,19 @@ TEST(Cli, RelaxOnClearsTheOverlapAndSaysSo) {
   const double free = figure(stats.err, "free diameter "), core = figure(stats.err, " mm, core ");
   EXPECT_GT(free, 0.0) << stats.err;
   EXPECT_NEAR(free / core, 1.9125, 0.01) << stats.err;
+  EXPECT_EQ(stats.err.find("measured on the mesh's centrelines"), std::string::npos) << stats.err;  // normal quality
+}
+
+// A coarse mesh cuts the yarn's bends by up to its chord error, so the overlaps --stats
+// measures on it say so, and how to measure the curves.
+TEST(Cli, StatsSayWhenTheOverlapsAreACoarseMeshs) {
+  const auto coarse = test::run_knitc("build patterns/jersey.lua -o " + quoted(test::scratch_dir("coarse") / "j.glb") +
+                                      " --relax off --tolerance 0.3 --stats");
+  ASSERT_EQ(coarse.exit_code, 0) << coarse.err;
+  EXPECT_NE(coarse.err.find("both measured on the mesh's centrelines, which cut the curves' bends by up to 0.30 d at this "
+                            "density; --quality normal measures the curves within 0.01 d"),
+            std::string::npos)
+      << coarse.err;
 }
 
 TEST(Cli, RendersAPreviewPng) {
