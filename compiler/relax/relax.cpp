@@ -402,22 +402,23 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
     bend(c, bending_stiffness, threads, strain);
     limit_bends(c, tightest_bend_radii, threads);
     for (int pass = 0; pass < length_passes; ++pass) keep_lengths(c, threads, strain);
+    // Settled: this sweep's pushes small (a few tolerances, at full strength) and its
+    // loops moved by a small step on average since `before`.
+    const bool pushes_settled = met <= settled_pushes * tolerance && iteration > 0 && scale == 1.0;
+    auto moved_little = [&] { return mean_move(c, before) <= options.settled_motion * d; };
     // Where the sweep's own passes have settled, what motion is left is theirs to the
     // size's fit too: carried further by a grown boost it would move the fabric on its
     // own (a tall strip's height kept one sign at 1e-10 a sweep, boosted to its cap it
     // moved the strip's ends 0.01 to 0.1 mm a sweep for 400 sweeps), so it starts again.
-    if (met <= settled_pushes * tolerance && iteration > 0 && scale == 1.0 && (size.free_width || size.free_height) &&
-        mean_move(c, before) <= options.settled_motion * d)
-      size.boost = glm::dvec2(1.0);
+    if (pushes_settled && (size.free_width || size.free_height) && moved_little()) size.boost = glm::dvec2(1.0);
     boost_size(c, before, size, asked, contacts);
     if (start)
       for (const Image& image : start->images)
         c.pos[image.point] = c.pos[image.source] + glm::dvec3(image.across * contacts.period().x, 0.0, 0.0);
-    // Done when this sweep's pushes were small (a few tolerances), the loops moved by a
-    // small step on average, it left no cores overlapping (the list holds every pair
-    // that could, until it is stale) and the yarns have their lengths back.
-    if (met <= settled_pushes * tolerance && iteration > 0 && iteration + 1 >= carried && scale == 1.0 &&
-        mean_move(c, before) <= options.settled_motion * d) {
+    // Done when the sweep settled, size step and all, it left no cores overlapping (the
+    // list holds every pair that could, until it is stale) and the yarns have their
+    // lengths back.
+    if (pushes_settled && iteration + 1 >= carried && moved_little()) {
       if (contacts.stale(c)) contacts.find(c);
       // (Held edges keep the swatch's size, so its yarn cannot get its length back.)
       if (contacts.deepest(c) <= tolerance && (!size.free_height || length_change(c) <= settled_length)) {
