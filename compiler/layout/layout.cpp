@@ -1,3 +1,8 @@
+// The course layout: every loop of the knit graph placed as the seed paper's 17-point
+// loop (Table 1) in its course and needle position, then moved by its stitch (pulled
+// through its parents, leaning across for cables, gathered, held, stood out in a bobble).
+// One idea over 400 lines: the passes of lay_out, in order, each working on the layout
+// made so far (the templates' shapes are in layout.hpp, the loops' graph in knit_graph).
 #include "layout/layout.hpp"
 
 #include <algorithm>
