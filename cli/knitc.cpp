@@ -262,7 +262,7 @@ int check(const Args& args) {
   }
   if (!args.quiet) {
     fmt::print(stderr, "{}: {} rows, {} stitches cast on, {} live at the end{}\n", args.pattern, p.courses.size(),
-               p.cast_on, knitc::produced(p.courses.back()), p.bound_off ? " (bound off)" : "");
+               p.cast_on, p.courses.empty() ? p.cast_on : knitc::produced(p.courses.back()), p.bound_off ? " (bound off)" : "");
   }
   return 0;
 }

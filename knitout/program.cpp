@@ -148,17 +148,32 @@ Program parse(std::string_view text, const std::string& file) {
     if (raw.find('\0') != std::string_view::npos)
       r.fail("the file holds a NUL byte: it is not a text file", "a knitout program is plain text", -1);
     if (r.line == 1) {
-      std::string_view first = trimmed(raw);
-      if (first.starts_with("\xEF\xBB\xBF")) first.remove_prefix(3);
+      if (raw.starts_with("\xEF\xBB\xBF")) raw.remove_prefix(3);
+      const std::string_view first = trimmed(raw);
       int version = 0;
       const auto [end_v, error] = std::from_chars(first.data() + std::min<std::size_t>(10, first.size()), first.data() + first.size(), version);
-      if (!first.starts_with(";!knitout-") || error != std::errc() || end_v != first.data() + first.size() || version < 1)
-        r.fail("the first line is not ';!knitout-N'", "a knitout program starts with its version line, like ;!knitout-2", -1);
-      program.version = version;
-      if (version > known_version)
-        r.warn("knitout version " + std::to_string(version) + " is newer than the " + std::to_string(known_version) + " knitc knows; read as version " + std::to_string(known_version));
-      if (at >= text.size()) break;
-      continue;
+      const bool version_line = first.starts_with(";!knitout-") && error == std::errc() && end_v == first.data() + first.size() && version >= 1;
+      // Without the version line (knitout requires it; some tools' programs and tests
+      // leave it out), a first line that is itself knitout, an operation or a comment, is
+      // read as the newest version, as CMU's visualizer reads it, with a warning; noise
+      // is refused at line 1.
+      if (!version_line) {
+        const std::string_view code = trimmed(first.substr(0, first.find(';')));
+        const std::string_view word = code.substr(0, std::min(code.size(), static_cast<std::size_t>(
+                                                                 std::find_if(code.begin(), code.end(), blank) - code.begin())));
+        const bool operation = word.starts_with("x-") || std::find(opcode_names.begin(), opcode_names.end() - 1, word) != opcode_names.end() - 1;
+        if (first.starts_with(";!knitout-") || (!operation && !(code.empty() && first.starts_with(";"))))
+          r.fail("the first line is not ';!knitout-N'", "a knitout program starts with its version line, like ;!knitout-2", -1);
+        r.warn("no ';!knitout-N' version line (knitout requires one); read as knitout-" + std::to_string(known_version));
+        program.version = known_version;
+      } else {
+        program.version = version;
+        if (version > known_version)
+          r.warn("knitout version " + std::to_string(version) + " is newer than the " + std::to_string(known_version) +
+                 " knitc knows; read as version " + std::to_string(known_version));
+        if (at >= text.size()) break;
+        continue;
+      }
     }
     const std::size_t semicolon = raw.find(';');
     const std::string_view code = trimmed(raw.substr(0, semicolon));

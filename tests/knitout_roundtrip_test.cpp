@@ -140,6 +140,12 @@ TEST(KnitoutCli, BadProgramsExitOneAtTheirLineAndMisuseExitsTwo) {
   const auto noise = test::run_knitc("check '" + (dir / "noise.k").string() + "'");
   EXPECT_EQ(noise.exit_code, 1);
   EXPECT_NE(noise.err.find("noise.k:1: the first line is not ';!knitout-N'"), std::string::npos) << noise.err;
+  // A program of one course (its cast-on) has no course after it: check said so by
+  // reading past the end of an empty list (a crash, found 2026-12-06).
+  test::write_text(dir / "one.k", ";!knitout-2\n;;Carriers: 1\ninhook 1\nknit + f1 1\n");
+  const auto one = test::run_knitc("check '" + (dir / "one.k").string() + "'");
+  EXPECT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_NE(one.err.find("1 stitches cast on, 1 live at the end"), std::string::npos) << one.err;
   EXPECT_EQ(test::run_knitc("knitout patterns/jersey.lua").exit_code, 2);
   EXPECT_EQ(test::run_knitc("knitout patterns/jersey.lua -o x.k --machine loom").exit_code, 2);
   const auto refused = test::run_knitc("knitout patterns/brioche.lua -o '" + (dir / "b.k").string() + "'");

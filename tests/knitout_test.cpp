@@ -84,8 +84,28 @@ TEST(KnitoutParse, WarnsForAMissingCarriersHeaderAndUnknownExtensions) {
   EXPECT_NE(p.warnings[2].find("no ';;Carriers:' header"), std::string::npos);
 }
 
+// koda-knitout's test programs, among others, start at their first operation; CMU's
+// visualizer reads such a program with an error shown. knitc reads it with a warning.
+TEST(KnitoutParse, ReadsAProgramWithoutItsVersionLineWithAWarning) {
+  const Program p = parse("\xEF\xBB\xBFinhook 1\r\ntuck - f2 1\nknit + f2 1\n", "t.k");
+  EXPECT_EQ(p.version, 2);
+  ASSERT_EQ(p.operations.size(), 3u);
+  EXPECT_EQ(p.operations[0].op, Opcode::inhook);
+  EXPECT_EQ(p.operations[0].line, 1);
+  EXPECT_EQ(p.operations[1].needle, (Needle{Bed::f, 2}));
+  ASSERT_EQ(p.warnings.size(), 2u);
+  EXPECT_EQ(p.warnings[0], "t.k:1: warning: no ';!knitout-N' version line (knitout requires one); read as knitout-2");
+  const Program commented = parse(";; made by hand\n;;Carriers: 1\ninhook 1\n", "t.k");
+  EXPECT_EQ(commented.rails, (std::vector<std::string>{"1"}));
+  ASSERT_EQ(commented.warnings.size(), 1u);
+  EXPECT_NE(commented.warnings[0].find("no ';!knitout-N' version line"), std::string::npos);
+}
+
 TEST(KnitoutParse, RefusesWhatIsNotKnitoutAtItsLine) {
-  EXPECT_EQ(error_of("knit + f1 1\n"), "t.k:1: the first line is not ';!knitout-N'; a knitout program starts with its version line, like ;!knitout-2");
+  EXPECT_EQ(error_of("Need to try:\nknit + f1 1\n"),
+            "t.k:1: the first line is not ';!knitout-N'; a knitout program starts with its version line, like ;!knitout-2");
+  EXPECT_NE(error_of(";!knitout-x\nknit + f1 1\n").find("t.k:1: the first line is not ';!knitout-N'"), std::string::npos);
+  EXPECT_NE(error_of("\n;!knitout-2\n").find("t.k:1: the first line is not ';!knitout-N'"), std::string::npos);
   EXPECT_EQ(error_of(";!knitout-2\n;;Carriers: 1\ninhook 1\nknot + f1 1\n"),
             "t.k:4: unknown operation 'knot'; knitout's operations are in, inhook, releasehook, out, outhook, knit, tuck, split, "
             "miss, drop, amiss, xfer, rack, stitch, pause and x-... extensions");
