@@ -157,6 +157,13 @@ std::variant<Compiled, int> load_and_compile(const Args& args) {
       report(fmt::format("knitc: warning: relaxing passed a yarn through another at {} of {} crossings (see docs/relaxation.md, "
                          "\"The library's gauges\"); --relax off draws the layout as it is",
                          through, f.crossings.kept + f.crossings.flipped + f.crossings.lost));
+  // A relaxation that stopped at its sweep limit with cores still into each other past its
+  // own tolerance has not found a fabric that could exist (a full-needle rib widening from
+  // a jersey: docs/knitout.md, "What is approximated"); said, not hidden behind the file.
+  if (const auto& f = std::get<knitc::Fabric>(compiled); knitc::cores_left_overlapping(f, args.compile.relaxation))
+    report(fmt::format("knitc: warning: the relaxation stopped after {} sweeps with yarn cores still {:.2f} core diameters into each "
+                       "other (the layout's: {:.2f}); this 3D fabric is not settled; --relax off draws the layout as it is",
+                       f.relaxation.iterations, f.relaxation.end_overlap, f.relaxation.start_overlap));
   return Compiled{std::move(std::get<knitc::Pattern>(loaded)), std::move(std::get<knitc::Fabric>(compiled)), clock.seconds};
 }
 

@@ -118,6 +118,13 @@ struct Fabric {
   std::string mesh_choice;
 };
 
+// Whether a relaxed fabric's yarn cores were left overlapping past the relaxation's own
+// tolerance (`relaxation`: the options it was relaxed with): it stopped at its sweep limit
+// without finding a fabric that could exist, which the program says.
+inline bool cores_left_overlapping(const Fabric& fabric, const relax::Options& relaxation) {
+  return fabric.relaxed && fabric.relaxation.end_overlap > relaxation.tolerance;
+}
+
 // Whether knitc relaxes a fabric unless told: the smooth model's, so that no two yarn
 // cores overlap; the paper model stays the seed paper's unrelaxed geometry.
 inline bool relaxed_by_default(yarn_paths::LoopModel model) { return model == yarn_paths::LoopModel::smooth; }

@@ -232,6 +232,22 @@ TEST(Relax, OffLeavesTheLayoutAsItIs) {
   EXPECT_EQ(traced[0].data_points, off.pieces[0].path.data_points);
 }
 
+// A relaxation cut short leaves the layout's overlaps (the program warns); a finished one
+// clears them. (A real case, a wide full-needle rib over a jersey, takes 15 s to stop
+// at its 400 sweeps: docs/knitout.md.)
+TEST(Relax, CoresLeftOverlappingAreToldFromASettledFabric) {
+  const Pattern pattern = at_paper_gauge("rib_1x1");
+  CompileOptions cut_short = centrelines(true);
+  cut_short.relaxation.max_iterations = 2;
+  const Fabric stopped = compile(pattern, cut_short);
+  EXPECT_EQ(stopped.relaxation.iterations, 2);
+  EXPECT_TRUE(cores_left_overlapping(stopped, cut_short.relaxation)) << stopped.relaxation.end_overlap;
+  const CompileOptions whole = centrelines(true);
+  const Fabric settled = compile(pattern, whole);
+  EXPECT_FALSE(cores_left_overlapping(settled, whole.relaxation)) << settled.relaxation.end_overlap;
+  EXPECT_FALSE(cores_left_overlapping(compile(pattern, centrelines(false)), whole.relaxation));
+}
+
 TEST(Relax, RefineKeepsEveryPointAndLoop) {
   const Pattern pattern = test::jersey(4, 3);
   const auto layout = layout::lay_out(pattern);
