@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 namespace knitc::knitout {
 
@@ -35,6 +36,13 @@ std::vector<std::string_view> split_words(std::string_view s) {
     if (i > start) out.push_back(s.substr(start, i - start));
   }
   return out;
+}
+
+// The opcode a word names, or none (`x-` extensions are not looked up here).
+std::optional<Opcode> opcode_of(std::string_view word) {
+  const auto known = std::find(opcode_names.begin(), opcode_names.end() - 1, word);
+  if (known == opcode_names.end() - 1) return std::nullopt;
+  return static_cast<Opcode>(known - opcode_names.begin());
 }
 
 std::string_view trimmed(std::string_view s) {
@@ -158,11 +166,9 @@ Program parse(std::string_view text, const std::string& file) {
       // read as the newest version, as CMU's visualizer reads it, with a warning; noise
       // is refused at line 1.
       if (!version_line) {
-        const std::string_view code = trimmed(first.substr(0, first.find(';')));
-        const std::string_view word = code.substr(0, std::min(code.size(), static_cast<std::size_t>(
-                                                                 std::find_if(code.begin(), code.end(), blank) - code.begin())));
-        const bool operation = word.starts_with("x-") || std::find(opcode_names.begin(), opcode_names.end() - 1, word) != opcode_names.end() - 1;
-        if (first.starts_with(";!knitout-") || (!operation && !(code.empty() && first.starts_with(";"))))
+        const auto words = split_words(first.substr(0, first.find(';')));
+        const bool operation = !words.empty() && (words.front().starts_with("x-") || opcode_of(words.front()));
+        if (first.starts_with(";!knitout-") || (!operation && !first.starts_with(";")))
           r.fail("the first line is not ';!knitout-N'", "a knitout program starts with its version line, like ;!knitout-2", -1);
         r.warn("no ';!knitout-N' version line (knitout requires one); read as knitout-" + std::to_string(known_version));
         program.version = known_version;
@@ -215,11 +221,11 @@ Program parse(std::string_view text, const std::string& file) {
         if (std::find(known_extensions.begin(), known_extensions.end(), opcode) == known_extensions.end())
           r.warn("unknown extension '" + std::string(opcode) + "' ignored");
       } else {
-        const auto known = std::find(opcode_names.begin(), opcode_names.end() - 1, opcode);
-        if (known == opcode_names.end() - 1)
+        const std::optional<Opcode> known = opcode_of(opcode);
+        if (!known)
           r.fail("unknown operation '" + std::string(opcode) + "'",
                  "knitout's operations are in, inhook, releasehook, out, outhook, knit, tuck, split, miss, drop, amiss, xfer, rack, stitch, pause and x-... extensions", this_source);
-        op.op = static_cast<Opcode>(known - opcode_names.begin());
+        op.op = *known;
         switch (op.op) {
           case Opcode::in: case Opcode::inhook: case Opcode::releasehook: case Opcode::out: case Opcode::outhook:
             if (w.size() < 2) r.fail("'" + std::string(opcode) + "' names no carrier", "write it with the carriers it moves, like: " + std::string(opcode) + " 3", this_source);
