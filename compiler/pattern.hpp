@@ -74,7 +74,11 @@ struct Course {
   std::vector<Op> ops;
   Side side = Side::right;  // wrong-side rows are worked left to right, seen from the back
   SourceLocation where;     // not part of the fabric: equality ignores it
-  bool operator==(const Course& o) const { return ops == o.ops && side == o.side; }
+  // Per live stitch after the course, the width of its needle position in loop widths,
+  // where a machine's needles set it (knitout/: a full-needle rib's two beds' loops share
+  // one position's width); empty where each is one loop width.
+  std::vector<double> widths;
+  bool operator==(const Course& o) const { return ops == o.ops && side == o.side && widths == o.widths; }
 };
 
 enum class Knitting { round, flat };
@@ -86,6 +90,7 @@ struct Pattern {
   Knitting knitting = Knitting::round;
   int cast_on = 0;          // live stitches before the first course
   int cast_on_yarn = 0;
+  std::vector<double> cast_on_widths;  // the cast-on's, as Course::widths
   std::vector<Course> courses;
   bool bound_off = false;   // the last course's loops are bound off
   bool operator==(const Pattern&) const = default;

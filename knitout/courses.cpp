@@ -38,6 +38,49 @@ StitchId cable_stitch(int width, int held, bool held_on_top) {
   return none;
 }
 
+// The needle column a position lies in, across the beds: a back needle at a fractional
+// racking (a quarter or half a pitch, for knitting both beds at once) lies in the column
+// of the front needle it nearly faces.
+long column_of(const Position& q) { return std::lround(q.x - 0.25); }
+
+// Each live stitch's needle position's width, in loop widths (`spacing` needle pitches),
+// flat work's positions sorted along the beds, `worked` where the course made a loop:
+// its column's width (half the way from the column before to the one after, at most
+// one; an end's, its neighbour's) shared by the stitches in it.
+// - A column whose two beds' loops are both worked (a full-needle rib) or both left:
+//   half each, so the course is as wide as its needles, not twice.
+// - One worked, the other left (a pass on one bed): the worked loop takes all but a
+//   tenth, so that the loop the course makes is as wide as the column.
+// A rib on alternate needles and a jersey keep one. Empty where every width is one.
+std::vector<double> needle_widths(const std::vector<Position>& pos, const std::vector<char>& worked, int spacing) {
+  const double left_weight = 0.1;  // a left stitch's share against a worked one's 1
+  std::vector<double> widths(pos.size(), 1.0);
+  std::vector<long> columns;          // distinct, in order
+  std::vector<std::size_t> first{0};  // each column's first position, and the end
+  for (std::size_t j = 0; j < pos.size(); ++j) {
+    const long c = column_of(pos[j]);
+    if (!columns.empty() && columns.back() != c) first.push_back(j);
+    if (columns.empty() || columns.back() != c) columns.push_back(c);
+  }
+  first.push_back(pos.size());
+  const std::size_t n = columns.size();
+  std::vector<double> share(n, 1.0);
+  for (std::size_t k = 1; k + 1 < n; ++k)
+    share[k] = std::min(1.0, 0.5 * static_cast<double>(columns[k + 1] - columns[k - 1]) / spacing);
+  if (n >= 3) share.front() = share[1], share.back() = share[n - 2];
+  if (n == 2) share.front() = share.back() = std::min(1.0, static_cast<double>(columns[1] - columns[0]) / spacing);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t from = first[k], to = first[k + 1];
+    const auto busy = std::count(worked.begin() + static_cast<std::ptrdiff_t>(from), worked.begin() + static_cast<std::ptrdiff_t>(to), 1);
+    const bool mixed = busy > 0 && static_cast<std::size_t>(busy) < to - from;
+    double total = 0.0;
+    for (std::size_t j = from; j < to; ++j) total += mixed && !worked[j] ? left_weight : 1.0;
+    for (std::size_t j = from; j < to; ++j) widths[j] = share[k] * (mixed && !worked[j] ? left_weight : 1.0) / total;
+  }
+  if (std::all_of(widths.begin(), widths.end(), [](double w) { return w == 1.0; })) return {};
+  return widths;
+}
+
 }  // namespace
 
 Imported import_program(const Program& program, const Profile& profile) {
@@ -68,21 +111,25 @@ Imported import_program(const Program& program, const Profile& profile) {
     yarn_of[c] = static_cast<int>(std::lower_bound(names.begin(), names.end(), program.carriers[c]) - names.begin());
   // The fabric's size from the machine's gauge: a loop as wide as the needles it spans
   // (full gauge one pitch, half gauge two), the yarn a quarter of that as in the seed paper.
-  std::map<int, long long> gaps;
+  // The gaps between the needles a course holds loops on: flat work's across both beds,
+  // whose loops lie in one sheet (a rib on alternate needles of each bed is full gauge);
+  // a tube's on the front bed, its layer's.
+  std::map<long, long long> gaps;
   for (const RawCourse& c : courses) {
-    std::vector<int> on_front;
+    std::vector<long> at;  // needles (a tube) or needle columns (flat) holding loops
     for (const Position& p : c.positions)
-      if (p.needle.bed == Bed::f) on_front.push_back(p.needle.index);
-    std::sort(on_front.begin(), on_front.end());
-    for (std::size_t k = 1; k < on_front.size(); ++k)
-      if (on_front[k] - on_front[k - 1] <= 3) ++gaps[on_front[k] - on_front[k - 1]];
+      if (!round || p.needle.bed == Bed::f) at.push_back(round ? p.needle.index : column_of(p));
+    std::sort(at.begin(), at.end());
+    at.erase(std::unique(at.begin(), at.end()), at.end());
+    for (std::size_t k = 1; k < at.size(); ++k)
+      if (at[k] - at[k - 1] <= 3) ++gaps[at[k] - at[k - 1]];
   }
-  int spacing = 1;
+  long spacing = 1;
   long long most = 0;
   for (const auto& [gap, count] : gaps)
     if (count > most) most = count, spacing = gap;
   const double pitch = 25.4 / profile.gauge;
-  pattern.gauge.loop_width = pitch * spacing;
+  pattern.gauge.loop_width = pitch * static_cast<double>(spacing);
   pattern.gauge.loop_height = 1.05 * pattern.gauge.loop_width;
   pattern.gauge.thickness = 0.5 * pattern.gauge.loop_width;
   static const char* palette[] = {"#d9c8a9", "#8a1c2b", "#2f5d8a", "#e0b33a", "#3c7a4a", "#6b4a8a", "#c8643c", "#404040"};
@@ -116,6 +163,8 @@ Imported import_program(const Program& program, const Profile& profile) {
   std::vector<int> on_needles;  // the loops stitch_of names
   std::vector<char> placed(loops.size(), 0), split_parent(loops.size(), 0);
   int approximated = 0;
+  // Per course after the cast-on, where it made a loop (for the needles' widths, below).
+  std::vector<std::vector<char>> worked(courses.size());
   for (std::size_t ci = 0; ci < courses.size(); ++ci) {
     RawCourse& raw = courses[ci];
     const Operation& first = program.operations[static_cast<std::size_t>(raw.first_operation)];
@@ -396,7 +445,30 @@ Imported import_program(const Program& program, const Profile& profile) {
         on_needles.push_back(l);
       }
     live = pos.size();
+    worked[ci].resize(pos.size());
+    for (std::size_t j = 0; j < pos.size(); ++j) worked[ci][j] = info[j].kind == Kind::made || info[j].kind == Kind::tucked;
     pattern.courses.push_back(std::move(course));
+  }
+  // Flat work knitted full needle: where a course holds both beds' loops in a needle
+  // column it knits both (at least nine times in ten; a full-needle rib, a Milano rib, a
+  // rib on every needle). Its columns are shared (needle_widths). Where the beds take
+  // turns instead (interlock, spacer fabrics, double-bed jacquard, half-Milano), the two
+  // layers are drawn side by side a whole position each: sharing their columns put them
+  // over each other at one depth, and more yarns passed through (docs/knitout.md).
+  if (!round) {
+    long shared = 0, both = 0;
+    for (std::size_t ci = 1; ci < courses.size(); ++ci)
+      for (std::size_t j = 0; j + 1 < courses[ci].positions.size(); ++j)
+        if (column_of(courses[ci].positions[j]) == column_of(courses[ci].positions[j + 1])) {
+          ++shared;
+          both += worked[ci][j] && worked[ci][j + 1];
+        }
+    if (shared > 0 && 10 * both >= 9 * shared) {
+      const int pitches = static_cast<int>(spacing);
+      pattern.cast_on_widths = needle_widths(courses[0].positions, std::vector<char>(courses[0].positions.size(), 1), pitches);
+      for (std::size_t ci = 1; ci < courses.size(); ++ci)
+        pattern.courses[ci - 1].widths = needle_widths(courses[ci].positions, worked[ci], pitches);
+    }
   }
   // A last course that binds off every stitch but the one the chain ends on is the
   // pattern's bind-off: the knitter pulls the yarn through that last loop.

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "knit_graph/knit_graph.hpp"
+#include "layout/layout.hpp"
 #include "measure/crossings.hpp"
 #include "measure/measure.hpp"
 #include "knitout.hpp"
@@ -47,6 +48,43 @@ std::string jersey(int width, int rows, const std::string& eol = "\n") {
   }
   return k + "outhook 3" + eol;
 }
+
+// `n` needles of jersey on the front (cast on by alternate knits, one row), then `rows`
+// rows of full-needle rib at racking +0.25: each front needle and the back one facing it.
+std::string full_rib_over_jersey(int n, int rows) {
+  std::string k = ";!knitout-2\n;;Carriers: 1\ninhook 1\n";
+  for (int i = n; i >= 1; --i)
+    if (i % 2 == 0) k += "knit - f" + std::to_string(i) + " 1\n";
+  for (int i = 1; i <= n; ++i)
+    if (i % 2 == 1) k += "knit + f" + std::to_string(i) + " 1\n";
+  for (int i = n; i >= 1; --i) k += "knit - f" + std::to_string(i) + " 1\n";
+  k += "releasehook 1\nrack +0.25\n";
+  for (int r = 0; r < rows; ++r)
+    if (r % 2 == 0)
+      for (int i = 1; i <= n; ++i) k += "knit + f" + std::to_string(i) + " 1\nknit + b" + std::to_string(i) + " 1\n";
+    else
+      for (int i = n; i >= 1; --i) k += "knit - b" + std::to_string(i) + " 1\nknit - f" + std::to_string(i) + " 1\n";
+  return k + "outhook 1\n";
+}
+
+// Interlock on `n` needles a bed at racking +0.25: a full-needle row to cast on, then
+// courses knitting the front's even needles and the back's odd ones, and the other way.
+std::string interlock(int n, int rows) {
+  std::string k = ";!knitout-2\n;;Carriers: 1\ninhook 1\nrack +0.25\n";
+  for (int i = n; i >= 1; --i) k += "knit - b" + std::to_string(i) + " 1\nknit - f" + std::to_string(i) + " 1\n";
+  k += "releasehook 1\n";
+  for (int r = 0; r < rows; ++r) {
+    const bool right = r % 2 == 0;
+    for (int j = 1; j <= n; ++j) {
+      const int i = right ? j : n + 1 - j;
+      k += std::string("knit ") + (right ? "+ " : "- ") + ((i % 2 == 0) == right ? "f" : "b") + std::to_string(i) + " 1\n";
+    }
+  }
+  return k + "outhook 1\n";
+}
+
+// A loop's middle along the course, mm: halfway between its sinker points.
+double middle_x(const layout::Loop& l) { return 0.5 * (l.data_points.front().x + l.data_points.back().x); }
 
 fs::path real(const std::string& name) { return test::shared_dir() / "knitout" / "real" / name; }
 
@@ -262,6 +300,62 @@ TEST(KnitoutImport, HandDerivedLoopCountsOfDoubleBedRibs) {
     EXPECT_EQ(n["yo"], back_needles);
     EXPECT_EQ(n["k"] + n["p"] + n["yo"] + in->pattern.cast_on, in->front_loops + in->back_loops);
   }
+}
+
+TEST(KnitoutImport, BothBedsLoopsInOneNeedleColumnShareItsWidth) {
+  // A full-needle rib is as wide as the jersey it grows from on the same needles: each
+  // front loop and the back loop facing it half a needle position, not one each.
+  const Pattern rib = import_text(full_rib_over_jersey(12, 4), "fr.k").pattern;
+  const layout::Layout laid = layout::lay_out(rib);
+  const double W = laid.loop_width;
+  ASSERT_EQ(laid.courses, 1 + 5);
+  EXPECT_TRUE(rib.courses[0].widths.empty()) << "the jersey row keeps whole positions";
+  for (int c = 2; c < laid.courses; ++c) {
+    ASSERT_EQ(rib.courses[static_cast<std::size_t>(c - 1)].widths, std::vector<double>(24, 0.5)) << "course " << c;
+    EXPECT_NEAR(layout::course_width(laid, c), layout::course_width(laid, 1), 1e-9) << "course " << c;
+  }
+  // Each front loop of the first rib row lies over its parent, within a quarter of a
+  // position (its parent's needle's half), not fanned out to twice the distance.
+  std::vector<const layout::Loop*> jersey_row, first_rib;
+  for (const layout::Loop& l : laid.loops) {
+    if (l.course == 1) jersey_row.push_back(&l);
+    if (l.course == 2 && l.wale % 2 == 0) first_rib.push_back(&l);
+  }
+  ASSERT_EQ(jersey_row.size(), 12u);
+  ASSERT_EQ(first_rib.size(), 12u);
+  std::sort(jersey_row.begin(), jersey_row.end(), [](auto* a, auto* b) { return a->wale < b->wale; });
+  std::sort(first_rib.begin(), first_rib.end(), [](auto* a, auto* b) { return a->wale < b->wale; });
+  for (std::size_t i = 0; i < 12; ++i) EXPECT_NEAR(middle_x(*first_rib[i]), middle_x(*jersey_row[i]), 0.3 * W) << "needle " << i + 1;
+
+  // An interlock's beds take turns: each course knits one bed's loop of a column and
+  // leaves the other. Its two layers are drawn side by side, whole positions
+  // (docs/knitout.md, "What is approximated"), its full-needle cast-on too.
+  const Pattern inter = import_text(interlock(12, 6), "interlock.k").pattern;
+  EXPECT_TRUE(inter.cast_on_widths.empty());
+  for (const Course& c : inter.courses) EXPECT_TRUE(c.widths.empty());
+
+  // A rib on alternate needles of each bed is full gauge: its loops are as wide as a
+  // jersey's, one needle pitch, whole positions.
+  std::string alternate = ";!knitout-2\n;;Carriers: 1\ninhook 1\n";
+  for (int r = 0; r < 6; ++r)
+    for (int j = 1; j <= 12; ++j) {
+      const int i = r % 2 == 0 ? 13 - j : j;
+      alternate += std::string("knit ") + (r % 2 == 0 ? "- " : "+ ") + (i % 2 ? "f" : "b") + std::to_string(i) + " 1\n";
+    }
+  const Pattern rib_1x1 = import_text(alternate + "outhook 1\n", "rib.k").pattern;
+  EXPECT_DOUBLE_EQ(rib_1x1.gauge.loop_width, import_text(jersey(12, 4), "j.k").pattern.gauge.loop_width);
+  for (const Course& c : rib_1x1.courses) EXPECT_TRUE(c.widths.empty());
+}
+
+TEST(KnitoutImport, AFullNeedleRibOverJerseyRelaxesWithoutPassingYarnsThrough) {
+  // Laid twice as wide as its jersey, the rib's first row fanned out over 60 needles and
+  // relaxing passed 562 of 5,854 crossings through (docs/knitout.md).
+  const Pattern rib = import_text(full_rib_over_jersey(60, 2), "fr.k").pattern;
+  const CompileOptions options = test::centrelines(true);
+  const Fabric f = compile(rib, options);
+  ASSERT_TRUE(f.crossings_checked);
+  EXPECT_EQ(measure::passed_through(f.crossings), 0u);
+  EXPECT_FALSE(cores_left_overlapping(f, options.relaxation)) << f.relaxation.end_overlap;
 }
 
 TEST(KnitoutImport, RealProgramsSayTheirStructures) {

@@ -91,10 +91,12 @@ double centre_x(const Layout& out, int course, int slot) {
   if (out.slot_x[course][slot + 1] == o + (slot + 1) * W) return o + (slot + 0.5) * W;
   return 0.5 * (out.slot_x[course][slot] + out.slot_x[course][slot + 1]);
 }
-// A loop's width: W, or its share of a cluster's (exactly W for every other loop, so
-// that fabrics without clusters keep their coordinates to the bit).
+// A loop's width: W, its share of a cluster's, or its needle position's where a machine's
+// needles set the course's widths (exactly W for every other loop, so that fabrics
+// without either keep their coordinates to the bit).
 double width_of(const Layout& out, const Loop& l) {
-  if (stitch(l.stitch).cluster_width <= 0.0 || l.shape == Template::tuck) return out.loop_width;
+  const bool by_needles = out.needle_widths[static_cast<std::size_t>(l.course)] != 0;
+  if (!by_needles && (stitch(l.stitch).cluster_width <= 0.0 || l.shape == Template::tuck)) return out.loop_width;
   return out.slot_x[l.course][l.wale + 1] - out.slot_x[l.course][l.wale];
 }
 
@@ -117,10 +119,21 @@ Columns columns_of(const std::vector<double>& widths, double W) {
   return out;
 }
 
-// The width of each needle position after each course, mm: W, or a cluster's share.
-std::vector<std::vector<double>> slot_widths(const Layout& out, const knit_graph::Graph& graph) {
+// The width of each needle position after each course, mm: W, a machine's needles' share
+// (Course::widths; the bind-off's, the last course's), or a cluster's share. Marks the
+// courses whose widths the needles set.
+std::vector<std::vector<double>> slot_widths(Layout& out, const Pattern& pattern, const knit_graph::Graph& graph) {
   std::vector<std::vector<double>> width(static_cast<std::size_t>(out.courses));
-  for (int c = 0; c < out.courses; ++c) width[c].assign(static_cast<std::size_t>(out.needle[c]), out.loop_width);
+  out.needle_widths.assign(static_cast<std::size_t>(out.courses), 0);
+  for (int c = 0; c < out.courses; ++c) {
+    const std::size_t n = static_cast<std::size_t>(out.needle[c]);
+    width[c].assign(n, out.loop_width);
+    const std::size_t row = std::min(static_cast<std::size_t>(c), pattern.courses.size());  // past the last: the bind-off
+    const std::vector<double>& set = row == 0 ? pattern.cast_on_widths : pattern.courses[row - 1].widths;
+    if (set.size() != n) continue;
+    for (std::size_t k = 0; k < n; ++k) width[c][k] = set[k] * out.loop_width;
+    out.needle_widths[c] = 1;
+  }
   for (const knit_graph::Loop& k : graph.loops) {
     const StitchDef& s = stitch(k.stitch);
     if (s.cluster_width > 0.0 && !k.held) width[k.course][k.slot] = s.cluster_width * out.loop_width / s.produces;
@@ -144,7 +157,7 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
   if (bind_off) out.needle.push_back(static_cast<int>(graph.live.size()));
   out.courses = static_cast<int>(out.needle.size());
   out.wales = out.needle.empty() ? 0 : *std::max_element(out.needle.begin(), out.needle.end());
-  const auto widths = slot_widths(out, graph);
+  const auto widths = slot_widths(out, pattern, graph);
   // Per course, the plain loops (knit or purl through one loop of the course below) and
   // their parents' columns: what lines a course up over the one below.
   std::vector<std::vector<std::pair<int, int>>> plain(static_cast<std::size_t>(out.courses));  // (column, parent's column)
@@ -311,7 +324,8 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
       }
       // A cluster's loops, a fifth of a loop width each, alternate in depth so that
       // neighbours' legs do not lie on one line.
-      if (w != W) p.z += (l.wale % 2 ? 0.5 : -0.5) * d * std::sin(std::numbers::pi * i / (loop_points - 1.0));
+      if (w != W && stitch(l.stitch).cluster_width > 0.0)
+        p.z += (l.wale % 2 ? 0.5 : -0.5) * d * std::sin(std::numbers::pi * i / (loop_points - 1.0));
       l.data_points[i] = origin + p;
     }
     // Exactly the next loop's P0, not origin + W rounded differently.

@@ -60,8 +60,12 @@ struct Layout {
   std::vector<double> origin_x;   // x of needle position 0 per course (flat work: its plain loops over their parents)
   // Per course: the x of each needle position's left edge, and of the last one's right
   // edge (needle + 1 values from origin_x). A position is one loop width, a cluster's
-  // loops (the nupp's) narrower.
+  // loops (the nupp's) narrower, and so are the two beds' loops of a needle column in a
+  // machine's full-needle knitting (Course::widths).
   std::vector<std::vector<double>> slot_x;
+  // Per course: 1 where a machine's needles set its positions' widths (Course::widths),
+  // so that every loop there takes its position's width.
+  std::vector<char> needle_widths;
   std::vector<int> direction;     // per course: -1 worked right to left (face view), +1 left to right
   std::vector<knit_graph::Float> floats;  // slipped stitches' floats, course by course
   // Per float: the points (course-local, left to right) a caught float is lifted through,
