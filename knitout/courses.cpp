@@ -51,6 +51,9 @@ long column_of(const Position& q) { return std::lround(q.x - 0.25); }
 //   half each, so the course is as wide as its needles, not twice.
 // - One worked, the other left (a pass on one bed): the worked loop takes all but a
 //   tenth, so that the loop the course makes is as wide as the column.
+// - Fewer loops than the course's columns most often hold (one bed's needle at an end,
+//   with no partner): each as wide as the others' loops, so the rib's positions stay on
+//   one lattice for its repeat (relax::lattice_step).
 // A rib on alternate needles and a jersey keep one. Empty where every width is one.
 std::vector<double> needle_widths(const std::vector<Position>& pos, const std::vector<char>& worked, int spacing) {
   const double left_weight = 0.1;  // a left stitch's share against a worked one's 1
@@ -69,11 +72,17 @@ std::vector<double> needle_widths(const std::vector<Position>& pos, const std::v
     share[k] = std::min(1.0, 0.5 * static_cast<double>(columns[k + 1] - columns[k - 1]) / spacing);
   if (n >= 3) share.front() = share[1], share.back() = share[n - 2];
   if (n == 2) share.front() = share.back() = std::min(1.0, static_cast<double>(columns[1] - columns[0]) / spacing);
+  // The loops a column of the course most often holds.
+  std::map<std::size_t, std::size_t> holding;
+  for (std::size_t k = 0; k < n; ++k) ++holding[first[k + 1] - first[k]];
+  std::size_t usual = 1, most = 0;
+  for (const auto& [loops, columns_holding] : holding)
+    if (columns_holding > most) most = columns_holding, usual = loops;
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t from = first[k], to = first[k + 1];
     const auto busy = std::count(worked.begin() + static_cast<std::ptrdiff_t>(from), worked.begin() + static_cast<std::ptrdiff_t>(to), 1);
     const bool mixed = busy > 0 && static_cast<std::size_t>(busy) < to - from;
-    double total = 0.0;
+    double total = to - from < usual ? static_cast<double>(usual - (to - from)) : 0.0;
     for (std::size_t j = from; j < to; ++j) total += mixed && !worked[j] ? left_weight : 1.0;
     for (std::size_t j = from; j < to; ++j) widths[j] = share[k] * (mixed && !worked[j] ? left_weight : 1.0) / total;
   }

@@ -82,6 +82,39 @@ TEST(Repeat, IsFoundFromTheLayout) {
 // at either end that differ (a border) are left out of the interior; round a patch of
 // another stitch (a motif on a plain ground, under a tenth of the interior) the block is
 // cut where the ground repeats exactly, and the patch's loops are not tiled.
+// A machine's full-needle rib: its positions half a loop width (each needle column
+// shared by the two beds' loops, docs/knitout.md), its repeat found on that lattice, its
+// cast-on left to the edges. Its last column holds the front's loop alone
+// (79 back needles to 80 front in CMU's), laid as narrow as the rest: a whole position
+// there, tiled, passed 996 of CMU's crossings through.
+TEST(Repeat, AFullNeedleRibsRepeatLiesOnItsColumnsLattice) {
+  const int n = 20, rows = 16;
+  std::string k = ";!knitout-2\n;;Carriers: 1\ninhook 1\n";
+  for (int i = n; i >= 1; --i) k += "knit - f" + std::to_string(i) + " 1\n";
+  k += "releasehook 1\nrack +0.25\n";
+  for (int r = 0; r < rows; ++r)
+    for (int j = 1; j <= n; ++j) {
+      const int i = r % 2 == 0 ? j : n + 1 - j;
+      const std::string way = r % 2 == 0 ? "+" : "-", f = "knit " + way + " f" + std::to_string(i) + " 1\n";
+      const std::string b = i < n ? "knit " + way + " b" + std::to_string(i) + " 1\n" : "";
+      k += r % 2 == 0 ? f + b : b + f;
+    }
+  const Pattern rib = knitout::import_text(k + "outhook 1\n", "fr.k").pattern;
+  EXPECT_EQ(rib.courses.back().widths, std::vector<double>(2 * n - 1, 0.5));
+  layout::Layout lattice = layout::lay_out(rib);
+  EXPECT_FALSE(relax::find_repeat(lattice)) << "not on the loop width's lattice";
+  EXPECT_DOUBLE_EQ(relax::lattice_step(lattice), 0.5 * lattice.loop_width);
+  lattice.loop_width = relax::lattice_step(lattice);
+  const auto repeat = relax::find_repeat(lattice);
+  ASSERT_TRUE(repeat);
+  EXPECT_EQ(repeat->wale_period, 2);  // a front loop and a back one
+  EXPECT_EQ(repeat->course_period, 2);
+  EXPECT_GE(repeat->course0, 2) << "the cast-on, and the rib's first row whose back loops are new, are not the repeat";
+  // A fabric with no machine's widths steps by its loop width.
+  const layout::Layout plain = layout::lay_out(test::jersey(12, 12));
+  EXPECT_EQ(relax::lattice_step(plain), plain.loop_width);
+}
+
 TEST(Repeat, IsFoundWhereTheInteriorMostlyRepeats) {
   auto layout_of = [](const std::string& body) {
     const std::string source =

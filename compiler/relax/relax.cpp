@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
 #include <span>
 
 #include <glm/common.hpp>
@@ -320,9 +321,18 @@ std::vector<std::vector<std::uint32_t>> same_as_by_piece(const std::vector<yarn_
 Relaxed relax(const layout::Layout& layout, const std::vector<yarn_paths::Piece>& pieces, const std::vector<yarn::Size>& sizes,
               const Options& options) {
   auto relaxed = [&]() -> Relaxed {
-    if (options.by_repeat && options.boundary == Boundary::free)
-      if (const auto repeat = find_repeat(layout))
-        if (auto out = relax_by_repeat(layout, pieces, sizes, options, *repeat)) return std::move(*out);
+    if (options.by_repeat && options.boundary == Boundary::free) {
+      // The repeat's lattice: the layout's, or a copy stepping as its needle positions do.
+      const double step = lattice_step(layout);
+      std::optional<layout::Layout> narrower;
+      if (step != layout.loop_width) {
+        narrower = layout;
+        narrower->loop_width = step;
+      }
+      const layout::Layout& lattice = narrower ? *narrower : layout;
+      if (const auto repeat = find_repeat(lattice))
+        if (auto out = relax_by_repeat(lattice, pieces, sizes, options, *repeat)) return std::move(*out);
+    }
     return relax_chains(layout, pieces, sizes, options, nullptr);  // a copy: a garment's repeat reads them only
   };
   Relaxed out = relaxed();

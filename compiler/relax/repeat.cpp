@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <map>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -96,6 +97,22 @@ int periodic_run(const std::vector<glm::dvec3>& points, std::size_t from, std::s
   return across;
 }
 
+double lattice_step(const layout::Layout& layout) {
+  if (std::find(layout.needle_widths.begin(), layout.needle_widths.end(), 1) == layout.needle_widths.end()) return layout.loop_width;
+  std::map<long long, std::pair<std::size_t, double>> widths;  // by the width in millionths of a loop width: count, a width
+  for (const auto& edges : layout.slot_x)
+    for (std::size_t k = 1; k < edges.size(); ++k) {
+      const double w = edges[k] - edges[k - 1];
+      auto& [count, width] = widths[std::llround(w / layout.loop_width * 1e6)];
+      if (count++ == 0) width = w;
+    }
+  double step = layout.loop_width;
+  std::size_t most = 0;
+  for (const auto& [key, seen] : widths)
+    if (seen.first > most) most = seen.first, step = seen.second;
+  return step;
+}
+
 std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   if (layout.courses < 8 || layout.wales < 8) return std::nullopt;
   if (layout.knitting == Knitting::round && layout.wales < least_round_wales) return std::nullopt;
@@ -111,9 +128,22 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   if (!layout.bobbles.empty()) return std::nullopt;  // a bobble's rows share one needle position
   for (const auto& loop : layout.loops)  // bound off within a row: the columns change
     if (loop.shape == layout::Template::bind_off && loop.course + 1 < layout.courses) return std::nullopt;
-  for (const auto& edges : layout.slot_x)
-    for (std::size_t k = 1; k < edges.size(); ++k)
-      if (std::abs(edges[k] - edges[k - 1] - layout.loop_width) > 1e-9 * layout.loop_width) return std::nullopt;
+  // Every needle position one lattice step wide (the loop width; relax() passes a machine's
+  // full-needle knitting with its columns' share, Course::widths). There, only the
+  // interior must lie on it: its jersey rows and cast-on are trimmed, and a column at
+  // its ends that holds one bed's loop (a whole position) is left to the edges.
+  auto on_lattice = [&](int from, int to, int wale_from, int wale_to) {
+    for (int c = from; c <= to; ++c) {
+      const auto& edges = layout.slot_x[static_cast<std::size_t>(c)];
+      const auto first = static_cast<std::size_t>(std::max(wale_from, 0)) + 1;
+      const std::size_t last = std::min(edges.size() - 1, static_cast<std::size_t>(wale_to) + 1);
+      for (std::size_t k = first; k <= last; ++k)
+        if (std::abs(edges[k] - edges[k - 1] - layout.loop_width) > 1e-9 * layout.loop_width) return false;
+    }
+    return true;
+  };
+  const bool by_needles = std::find(layout.needle_widths.begin(), layout.needle_widths.end(), 1) != layout.needle_widths.end();
+  if (!by_needles && !on_lattice(0, layout.courses - 1, 0, layout.wales)) return std::nullopt;
   const LoopGrid g = grid_of(layout);
   // The interior, less up to `most_trimmed` more courses at either end where those do not
   // repeat (a machine program's cast-on, its held and dropped loops, its bind-off's held
@@ -139,6 +169,7 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
     q = p == 0 ? 0 : smallest_period(layout, g, in, false, most_not_repeating);
   }
   if (p == 0 || q == 0) return std::nullopt;
+  if (by_needles && !on_lattice(in.course_from, in.course_to, in.wale_from, in.wale_to)) return std::nullopt;
   Repeat r;
   r.wales = p * ((least_tile_wales + p - 1) / p);
   r.courses = q * ((least_tile_courses + q - 1) / q);

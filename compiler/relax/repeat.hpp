@@ -53,6 +53,12 @@ inline constexpr int morph_sweeps = 30;
 // tried (at most 64 each way).
 std::optional<Repeat> find_repeat(const layout::Layout& layout);
 
+// The step of the lattice a layout's repeat lies on, mm: the loop width, or where a
+// machine's needles set the positions' widths (a full-needle rib's columns shared by both
+// beds, Course::widths) the width most positions take. relax() looks for the repeat in a
+// copy of such a layout whose loop_width is this step.
+double lattice_step(const layout::Layout& layout);
+
 // Points either side of a period of a course's yarn kept as its images in the periods
 // before and after (a tile's run, a strip's).
 inline constexpr std::size_t run_handles = 8;
