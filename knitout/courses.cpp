@@ -458,21 +458,24 @@ Imported import_program(const Program& program, const Profile& profile) {
     for (std::size_t j = 0; j < pos.size(); ++j) worked[ci][j] = info[j].kind == Kind::made || info[j].kind == Kind::tucked;
     pattern.courses.push_back(std::move(course));
   }
-  // Flat work knitted full needle: where a course holds both beds' loops in a needle
-  // column it knits both (at least nine times in ten; a full-needle rib, a Milano rib, a
-  // rib on every needle). Its columns are shared (needle_widths). Where the beds take
-  // turns instead (interlock, spacer fabrics, double-bed jacquard, half-Milano), the two
-  // layers are drawn side by side a whole position each: sharing their columns put them
-  // over each other at one depth, and more yarns passed through (docs/knitout.md).
+  // Flat work where a course holding both beds' loops in a needle column knits both (at
+  // least nine times in ten: a full-needle rib, a Milano rib, a rib on every needle), or
+  // knits exactly one of them (as often: an interlock, whose beds take turns). Its
+  // columns are shared (needle_widths): a full-needle rib as wide as its needles, an
+  // interlock's two beds' loops over each other, its two layers. Where the two mix
+  // (spacer fabrics, double-bed jacquard, half-Milano), the two layers are drawn side by
+  // side a whole position each: sharing their columns put them over each other at one
+  // depth, and more yarns passed through (docs/knitout.md).
   if (!round) {
-    long shared = 0, both = 0;
+    long shared = 0, both = 0, one = 0;
     for (std::size_t ci = 1; ci < courses.size(); ++ci)
       for (std::size_t j = 0; j + 1 < courses[ci].positions.size(); ++j)
         if (column_of(courses[ci].positions[j]) == column_of(courses[ci].positions[j + 1])) {
           ++shared;
           both += worked[ci][j] && worked[ci][j + 1];
+          one += worked[ci][j] != worked[ci][j + 1];
         }
-    if (shared > 0 && 10 * both >= 9 * shared) {
+    if (shared > 0 && (10 * both >= 9 * shared || 10 * one >= 9 * shared)) {
       const int pitches = static_cast<int>(spacing);
       pattern.cast_on_widths = needle_widths(courses[0].positions, std::vector<char>(courses[0].positions.size(), 1), pitches);
       for (std::size_t ci = 1; ci < courses.size(); ++ci)

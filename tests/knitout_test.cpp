@@ -327,12 +327,28 @@ TEST(KnitoutImport, BothBedsLoopsInOneNeedleColumnShareItsWidth) {
   std::sort(first_rib.begin(), first_rib.end(), [](auto* a, auto* b) { return a->wale < b->wale; });
   for (std::size_t i = 0; i < 12; ++i) EXPECT_NEAR(middle_x(*first_rib[i]), middle_x(*jersey_row[i]), 0.3 * W) << "needle " << i + 1;
 
-  // An interlock's beds take turns: each course knits one bed's loop of a column and
-  // leaves the other. Its two layers are drawn side by side, whole positions
-  // (docs/knitout.md, "What is approximated"), its full-needle cast-on too.
+  // An interlock's two layers: a course knits one bed's loop of each column and leaves
+  // the other, so the loop it knits takes the column's width (all but a tenth) and lies
+  // over the other bed's loop of that column, knitted the course before.
   const Pattern inter = import_text(interlock(12, 6), "interlock.k").pattern;
-  EXPECT_TRUE(inter.cast_on_widths.empty());
-  for (const Course& c : inter.courses) EXPECT_TRUE(c.widths.empty());
+  const layout::Layout two = layout::lay_out(inter);
+  ASSERT_EQ(two.courses, 1 + 6);
+  EXPECT_EQ(inter.cast_on_widths, std::vector<double>(24, 0.5));
+  for (int c = 2; c + 1 < two.courses; ++c) {
+    std::map<int, const layout::Loop*> next;
+    for (const layout::Loop& l : two.loops)
+      if (l.course == c + 1) next[l.wale] = &l;
+    int pairs = 0;
+    for (const layout::Loop& l : two.loops) {
+      if (l.course != c) continue;
+      EXPECT_NEAR(inter.courses[static_cast<std::size_t>(c - 1)].widths[static_cast<std::size_t>(l.wale)], 1.0 / 1.1, 1e-12);
+      const auto other = next.find(l.wale ^ 1);  // the column's other bed
+      ASSERT_NE(other, next.end()) << "course " << c << " wale " << l.wale;
+      EXPECT_NEAR(middle_x(l), middle_x(*other->second), 0.2 * two.loop_width) << "course " << c << " wale " << l.wale;
+      ++pairs;
+    }
+    EXPECT_EQ(pairs, 12);
+  }
 
   // A rib on alternate needles of each bed is full gauge: its loops are as wide as a
   // jersey's, one needle pitch, whole positions.
