@@ -17,6 +17,7 @@
 #include <cmath>
 #include <map>
 
+#include "columns.hpp"
 #include "cut.hpp"
 #include "knit_graph/knit_graph.hpp"
 #include "knitout.hpp"
@@ -36,58 +37,6 @@ StitchId cable_stitch(int width, int held, bool held_on_top) {
       return static_cast<StitchId>(i);
   }
   return none;
-}
-
-// The needle column a position lies in, across the beds: a back needle at a fractional
-// racking (a quarter or half a pitch, for knitting both beds at once) lies in the column
-// of the front needle it nearly faces.
-long column_of(const Position& q) { return std::lround(q.x - 0.25); }
-
-// Each live stitch's needle position's width, in loop widths (`spacing` needle pitches),
-// flat work's positions sorted along the beds, `worked` where the course made a loop:
-// its column's width (half the way from the column before to the one after, at most
-// one; an end's, its neighbour's) shared by the stitches in it.
-// - A column whose two beds' loops are both worked (a full-needle rib) or both left:
-//   half each, so the course is as wide as its needles, not twice.
-// - One worked, the other left (a pass on one bed): the worked loop takes all but a
-//   tenth, so that the loop the course makes is as wide as the column.
-// - Fewer loops than the course's columns most often hold (one bed's needle at an end,
-//   with no partner): each as wide as the others' loops, so the rib's positions stay on
-//   one lattice for its repeat (relax::lattice_step).
-// A rib on alternate needles and a jersey keep one. Empty where every width is one.
-std::vector<double> needle_widths(const std::vector<Position>& pos, const std::vector<char>& worked, int spacing) {
-  const double left_weight = 0.1;  // a left stitch's share against a worked one's 1
-  std::vector<double> widths(pos.size(), 1.0);
-  std::vector<long> columns;          // distinct, in order
-  std::vector<std::size_t> first{0};  // each column's first position, and the end
-  for (std::size_t j = 0; j < pos.size(); ++j) {
-    const long c = column_of(pos[j]);
-    if (!columns.empty() && columns.back() != c) first.push_back(j);
-    if (columns.empty() || columns.back() != c) columns.push_back(c);
-  }
-  first.push_back(pos.size());
-  const std::size_t n = columns.size();
-  std::vector<double> share(n, 1.0);
-  for (std::size_t k = 1; k + 1 < n; ++k)
-    share[k] = std::min(1.0, 0.5 * static_cast<double>(columns[k + 1] - columns[k - 1]) / spacing);
-  if (n >= 3) share.front() = share[1], share.back() = share[n - 2];
-  if (n == 2) share.front() = share.back() = std::min(1.0, static_cast<double>(columns[1] - columns[0]) / spacing);
-  // The loops a column of the course most often holds.
-  std::map<std::size_t, std::size_t> holding;
-  for (std::size_t k = 0; k < n; ++k) ++holding[first[k + 1] - first[k]];
-  std::size_t usual = 1, most = 0;
-  for (const auto& [loops, columns_holding] : holding)
-    if (columns_holding > most) most = columns_holding, usual = loops;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t from = first[k], to = first[k + 1];
-    const auto busy = std::count(worked.begin() + static_cast<std::ptrdiff_t>(from), worked.begin() + static_cast<std::ptrdiff_t>(to), 1);
-    const bool mixed = busy > 0 && static_cast<std::size_t>(busy) < to - from;
-    double total = to - from < usual ? static_cast<double>(usual - (to - from)) : 0.0;
-    for (std::size_t j = from; j < to; ++j) total += mixed && !worked[j] ? left_weight : 1.0;
-    for (std::size_t j = from; j < to; ++j) widths[j] = share[k] * (mixed && !worked[j] ? left_weight : 1.0) / total;
-  }
-  if (std::all_of(widths.begin(), widths.end(), [](double w) { return w == 1.0; })) return {};
-  return widths;
 }
 
 }  // namespace
@@ -120,23 +69,7 @@ Imported import_program(const Program& program, const Profile& profile) {
     yarn_of[c] = static_cast<int>(std::lower_bound(names.begin(), names.end(), program.carriers[c]) - names.begin());
   // The fabric's size from the machine's gauge: a loop as wide as the needles it spans
   // (full gauge one pitch, half gauge two), the yarn a quarter of that as in the seed paper.
-  // The gaps between the needles a course holds loops on: flat work's across both beds,
-  // whose loops lie in one sheet (a rib on alternate needles of each bed is full gauge);
-  // a tube's on the front bed, its layer's.
-  std::map<long, long long> gaps;
-  for (const RawCourse& c : courses) {
-    std::vector<long> at;  // needles (a tube) or needle columns (flat) holding loops
-    for (const Position& p : c.positions)
-      if (!round || p.needle.bed == Bed::f) at.push_back(round ? p.needle.index : column_of(p));
-    std::sort(at.begin(), at.end());
-    at.erase(std::unique(at.begin(), at.end()), at.end());
-    for (std::size_t k = 1; k < at.size(); ++k)
-      if (at[k] - at[k - 1] <= 3) ++gaps[at[k] - at[k - 1]];
-  }
-  long spacing = 1;
-  long long most = 0;
-  for (const auto& [gap, count] : gaps)
-    if (count > most) most = count, spacing = gap;
+  const long spacing = spacing_of(courses, round);
   const double pitch = 25.4 / profile.gauge;
   pattern.gauge.loop_width = pitch * static_cast<double>(spacing);
   pattern.gauge.loop_height = 1.05 * pattern.gauge.loop_width;
@@ -458,29 +391,12 @@ Imported import_program(const Program& program, const Profile& profile) {
     for (std::size_t j = 0; j < pos.size(); ++j) worked[ci][j] = info[j].kind == Kind::made || info[j].kind == Kind::tucked;
     pattern.courses.push_back(std::move(course));
   }
-  // Flat work where a course holding both beds' loops in a needle column knits both (at
-  // least nine times in ten: a full-needle rib, a Milano rib, a rib on every needle), or
-  // knits exactly one of them (as often: an interlock, whose beds take turns). Its
-  // columns are shared (needle_widths): a full-needle rib as wide as its needles, an
-  // interlock's two beds' loops over each other, its two layers. Where the two mix
-  // (spacer fabrics, double-bed jacquard, half-Milano), the two layers are drawn side by
-  // side a whole position each: sharing their columns put them over each other at one
-  // depth, and more yarns passed through (docs/knitout.md).
+  // Where both beds' loops share needle columns, each position's width (columns.hpp).
   if (!round) {
-    long shared = 0, both = 0, one = 0;
-    for (std::size_t ci = 1; ci < courses.size(); ++ci)
-      for (std::size_t j = 0; j + 1 < courses[ci].positions.size(); ++j)
-        if (column_of(courses[ci].positions[j]) == column_of(courses[ci].positions[j + 1])) {
-          ++shared;
-          both += worked[ci][j] && worked[ci][j + 1];
-          one += worked[ci][j] != worked[ci][j + 1];
-        }
-    if (shared > 0 && (10 * both >= 9 * shared || 10 * one >= 9 * shared)) {
-      const int pitches = static_cast<int>(spacing);
-      pattern.cast_on_widths = needle_widths(courses[0].positions, std::vector<char>(courses[0].positions.size(), 1), pitches);
-      for (std::size_t ci = 1; ci < courses.size(); ++ci)
-        pattern.courses[ci - 1].widths = needle_widths(courses[ci].positions, worked[ci], pitches);
-    }
+    ColumnWidths widths = column_widths(courses, worked, static_cast<int>(spacing));
+    pattern.cast_on_widths = std::move(widths.cast_on);
+    for (std::size_t ci = 1; ci < courses.size() && ci - 1 < widths.courses.size(); ++ci)
+      pattern.courses[ci - 1].widths = std::move(widths.courses[ci - 1]);
   }
   // A last course that binds off every stitch but the one the chain ends on is the
   // pattern's bind-off: the knitter pulls the yarn through that last loop.
