@@ -26,6 +26,7 @@ Cut cut_courses(const Program& program, Machine& machine) {
   int plated_line = 0;
   int& last_drop_line = cut.last_drop_line;
   std::vector<Run> waiting;  // misses before the next course opens
+  std::map<int, int> last_way;  // per carrier: the direction it last stitched in
   for (std::size_t i = 0; i < program.operations.size(); ++i) {
     const Operation& op = program.operations[i];
     const bool stitch = (op.op == Opcode::knit || op.op == Opcode::tuck || op.op == Opcode::split) && !op.carriers.empty();
@@ -54,8 +55,22 @@ Cut cut_courses(const Program& program, Machine& machine) {
       bool passed = turns(went);
       for (const Run& r : went)
         passed = passed || (std::find(op.carriers.begin(), op.carriers.end(), r.carrier) != op.carriers.end() && r.on(side) && r.passes(x));
+      // A carrier turning back into a new pass while another's course is open (a spacer's
+      // layer after the tucks between them, a jacquard's next colour): the pass starts the
+      // next course if it goes on to stitch where this course already has, or its first
+      // loops would be drawn a course low.
+      const auto last = last_way.find(op.carriers.front());
+      if (!passed && last != last_way.end() && last->second != op.direction && op.direction != 0 &&
+          std::none_of(went.begin(), went.end(), [&](const Run& r) { return r.carrier == op.carriers.front(); }))
+        for (std::size_t k = i + 1; k < program.operations.size() && !passed; ++k) {
+          const Operation& next = program.operations[k];
+          const bool stitches = next.op == Opcode::knit || next.op == Opcode::tuck || next.op == Opcode::split;
+          if ((!stitches && next.op != Opcode::miss) || next.carriers != op.carriers || next.direction != op.direction) break;
+          passed = stitches && has_open_loop(next.needle);
+        }
       if (passed) close();
     }
+    if (stitch && op.direction != 0) last_way[op.carriers.front()] = op.direction;
     const std::size_t before = machine.loops().size();
     if (moves && !open) last_drop_line = op.line;
     machine.run(i);
