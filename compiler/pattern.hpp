@@ -78,7 +78,18 @@ struct Course {
   // where a machine's needles set it (knitout/: a full-needle rib's two beds' loops share
   // one position's width); empty where each is one loop width.
   std::vector<double> widths;
-  bool operator==(const Course& o) const { return ops == o.ops && side == o.side && widths == o.widths; }
+  // Per live stitch after the course, where a machine knits two layers over each other
+  // (a spacer fabric, a double jacquard): +1 a front-bed loop, drawn in front, -1 a
+  // back-bed loop, behind, each at its needle column's whole width (a position 0 wide
+  // lies over the one before it, in its column); empty for one layer.
+  std::vector<signed char> layers;
+  // How far the course lies above the one before, in course spacings: less than one
+  // where it knits only loops of courses further down, its layer's courses being fewer
+  // than the fabric's (a spacer's tucks between its layers' courses).
+  double rise = 1.0;
+  bool operator==(const Course& o) const {
+    return ops == o.ops && side == o.side && widths == o.widths && layers == o.layers && rise == o.rise;
+  }
 };
 
 enum class Knitting { round, flat };
@@ -91,6 +102,7 @@ struct Pattern {
   int cast_on = 0;          // live stitches before the first course
   int cast_on_yarn = 0;
   std::vector<double> cast_on_widths;  // the cast-on's, as Course::widths
+  std::vector<signed char> cast_on_layers;  // and as Course::layers
   std::vector<Course> courses;
   bool bound_off = false;   // the last course's loops are bound off
   bool operator==(const Pattern&) const = default;

@@ -3,33 +3,49 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
+#include <unordered_map>
 
 namespace knitc::knitout {
 
 namespace {
 
-// Each live stitch's needle position's width, in loop widths (`spacing` needle pitches),
-// flat work's positions sorted along the beds, `worked` where the course made a loop:
-// its column's width (half the way from the column before to the one after, at most
-// one; an end's, its neighbour's) shared by the stitches in it.
-// - A column whose two beds' loops are both worked (a full-needle rib) or both left:
-//   half each, so the course is as wide as its needles, not twice.
-// - One worked, the other left (a pass on one bed): the worked loop takes all but a
-//   tenth, so that the loop the course makes is as wide as the column.
-// - Fewer loops than the course's columns most often hold (one bed's needle at an end,
-//   with no partner): each as wide as the others' loops, so the rib's positions stay on
-//   one lattice for its repeat (relax::lattice_step).
-// A rib on alternate needles and a jersey keep one. Empty where every width is one.
-std::vector<double> needle_widths(const std::vector<Position>& pos, const std::vector<char>& worked, int spacing) {
+// A course's positions as needle columns (`spacing` needle pitches), flat work's
+// positions sorted along the beds, `worked` where the course made a loop: each column's
+// width, half the way from the column before to the one after (at most one; an end's,
+// its neighbour's), and how its loops take it.
+enum class Arrangement {
+  // Side by side, each taking a share of the column:
+  // - its two beds' loops both worked (a full-needle rib) or both left: half each, so
+  //   the course is as wide as its needles, not twice;
+  // - one worked, the other left (a pass on one bed): the worked loop all but a tenth,
+  //   so that the loop the course makes is as wide as the column;
+  // - fewer loops than the course's columns most often hold (one bed's needle at an
+  //   end, with no partner): each as wide as the others' loops, so the rib's positions
+  //   stay on one lattice for its repeat (relax::lattice_step).
+  side_by_side,
+  // Two layers: each loop at the column's whole width, the back bed's behind the front's
+  // (its position 0 wide, over the one before).
+  layered,
+};
+struct Columns {
+  std::vector<double> widths;
+  std::vector<signed char> layers;
+};
+Columns needle_columns(const std::vector<Position>& pos, const std::vector<char>& worked, const std::vector<char>& paired,
+                       int spacing, Arrangement how) {
   const double left_weight = 0.1;  // a left stitch's share against a worked one's 1
-  std::vector<double> widths(pos.size(), 1.0);
+  Columns out;
+  out.widths.assign(pos.size(), 1.0);
   std::vector<long> columns;          // distinct, in order
   std::vector<std::size_t> first{0};  // each column's first position, and the end
   for (std::size_t j = 0; j < pos.size(); ++j) {
     const long c = column_of(pos[j]);
-    if (!columns.empty() && columns.back() != c) first.push_back(j);
-    if (columns.empty() || columns.back() != c) columns.push_back(c);
+    if (columns.empty() || columns.back() != c) {
+      if (!columns.empty()) first.push_back(j);
+      columns.push_back(c);
+    }
   }
   first.push_back(pos.size());
   const std::size_t n = columns.size();
@@ -38,6 +54,18 @@ std::vector<double> needle_widths(const std::vector<Position>& pos, const std::v
     share[k] = std::min(1.0, 0.5 * static_cast<double>(columns[k + 1] - columns[k - 1]) / spacing);
   if (n >= 3) share.front() = share[1], share.back() = share[n - 2];
   if (n == 2) share.front() = share.back() = std::min(1.0, static_cast<double>(columns[1] - columns[0]) / spacing);
+  if (how == Arrangement::layered) {
+    out.layers.resize(pos.size());
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t from = first[k], to = first[k + 1];
+      const bool side = to - from == 2 && paired[from] && paired[from + 1];
+      for (std::size_t j = from; j < to; ++j) {
+        out.widths[j] = side ? 0.5 * share[k] : j == from ? share[k] : 0.0;
+        out.layers[j] = front(pos[j].needle.bed) ? 1 : -1;
+      }
+    }
+    return out;
+  }
   // The loops a column of the course most often holds.
   std::map<std::size_t, std::size_t> holding;
   for (std::size_t k = 0; k < n; ++k) ++holding[first[k + 1] - first[k]];
@@ -50,10 +78,10 @@ std::vector<double> needle_widths(const std::vector<Position>& pos, const std::v
     const bool mixed = busy > 0 && static_cast<std::size_t>(busy) < to - from;
     double total = to - from < usual ? static_cast<double>(usual - (to - from)) : 0.0;
     for (std::size_t j = from; j < to; ++j) total += mixed && !worked[j] ? left_weight : 1.0;
-    for (std::size_t j = from; j < to; ++j) widths[j] = share[k] * (mixed && !worked[j] ? left_weight : 1.0) / total;
+    for (std::size_t j = from; j < to; ++j) out.widths[j] = share[k] * (mixed && !worked[j] ? left_weight : 1.0) / total;
   }
-  if (std::all_of(widths.begin(), widths.end(), [](double w) { return w == 1.0; })) return {};
-  return widths;
+  if (std::all_of(out.widths.begin(), out.widths.end(), [](double w) { return w == 1.0; })) out.widths.clear();
+  return out;
 }
 
 }  // namespace
@@ -78,7 +106,8 @@ long spacing_of(const std::vector<RawCourse>& courses, bool round) {
   return spacing;
 }
 
-ColumnWidths column_widths(const std::vector<RawCourse>& courses, const std::vector<std::vector<char>>& worked, int spacing) {
+ColumnWidths column_widths(const std::vector<RawCourse>& courses, const std::vector<std::vector<char>>& worked,
+                           const std::vector<Loop>& loops, int spacing) {
   ColumnWidths out;
   long shared = 0, both = 0, one = 0;
   for (std::size_t ci = 1; ci < courses.size(); ++ci)
@@ -88,10 +117,71 @@ ColumnWidths column_widths(const std::vector<RawCourse>& courses, const std::vec
         both += worked[ci][j] && worked[ci][j + 1];
         one += worked[ci][j] != worked[ci][j + 1];
       }
-  if (courses.empty() || shared == 0 || (10 * both < 9 * shared && 10 * one < 9 * shared)) return out;
-  out.cast_on = needle_widths(courses[0].positions, std::vector<char>(courses[0].positions.size(), 1), spacing);
-  for (std::size_t ci = 1; ci < courses.size(); ++ci) out.courses.push_back(needle_widths(courses[ci].positions, worked[ci], spacing));
+  if (courses.empty() || shared == 0) return out;
+  const bool mixed = 10 * both < 9 * shared && 10 * one < 9 * shared;
+  // Two layers are the fabric's, most of its loops in them: not a few double-bed courses
+  // in a sheet (a cable's, a short row's), which keep whole positions.
+  std::size_t positions = 0;
+  for (std::size_t ci = 1; ci < courses.size(); ++ci) positions += courses[ci].positions.size();
+  if (mixed && 4 * static_cast<std::size_t>(shared) < positions) return out;
+  const Arrangement how = mixed ? Arrangement::layered : Arrangement::side_by_side;
+  // Per position of a course: its loop made next to its column's other one along one
+  // yarn (a rib's stitches, in a layer's course drawn side by side).
+  auto paired = [&](const RawCourse& c) {
+    std::vector<char> next(c.positions.size(), 0);
+    std::unordered_map<int, std::size_t> at;  // loop -> its place in c.made
+    for (std::size_t i = 0; i < c.made.size(); ++i) at[c.made[i]] = i;
+    auto made_at = [&](std::size_t j) -> long {
+      for (int l : c.positions[j].pile)
+        if (auto it = at.find(l); it != at.end()) return static_cast<long>(it->second);
+      return -1;
+    };
+    for (std::size_t j = 0; j + 1 < c.positions.size(); ++j) {
+      if (column_of(c.positions[j]) != column_of(c.positions[j + 1])) continue;
+      const long a = made_at(j), b = made_at(j + 1);
+      if (a < 0 || b < 0 || std::abs(a - b) != 1) continue;
+      const auto& ca = loops[static_cast<std::size_t>(c.made[static_cast<std::size_t>(a)])].carriers;
+      const auto& cb = loops[static_cast<std::size_t>(c.made[static_cast<std::size_t>(b)])].carriers;
+      if (ca == cb) next[j] = next[j + 1] = 1;
+    }
+    return next;
+  };
+  Columns cast_on = needle_columns(courses[0].positions, std::vector<char>(courses[0].positions.size(), 1), paired(courses[0]), spacing, how);
+  out.cast_on = std::move(cast_on.widths);
+  out.cast_on_layers = std::move(cast_on.layers);
+  for (std::size_t ci = 1; ci < courses.size(); ++ci) {
+    Columns c = needle_columns(courses[ci].positions, worked[ci], paired(courses[ci]), spacing, how);
+    out.courses.push_back(std::move(c.widths));
+    out.layers.push_back(std::move(c.layers));
+  }
   return out;
+}
+
+std::vector<double> layer_rises(const std::vector<Loop>& loops, const std::vector<int>& course_of,
+                                const std::vector<RawCourse>& courses) {
+  std::vector<double> y(courses.size(), 0.0);  // each course's height, in course spacings
+  for (std::size_t ci = 1; ci < courses.size(); ++ci) {
+    double asks[2] = {-1.0, -1.0};  // per bed, front then back: the height its loops ask
+    for (int l : courses[ci].made) {
+      const Loop& loop = loops[static_cast<std::size_t>(l)];
+      if (loop.made_by == Opcode::tuck || loop.parents.empty()) continue;
+      // The wale's loop: the lowest in the pile that was knitted, not tucked.
+      int wale = loop.parents.front();
+      for (int q : loop.parents)
+        if (loops[static_cast<std::size_t>(q)].made_by != Opcode::tuck) {
+          wale = q;
+          break;
+        }
+      const auto below = static_cast<std::size_t>(course_of[static_cast<std::size_t>(wale)]);
+      double& ask = asks[front(loop.needle.bed) ? 0 : 1];
+      if (below < ci) ask = std::max(ask, y[below] + 1.0);
+    }
+    const double ask = asks[0] < 0.0 ? asks[1] : asks[1] < 0.0 ? asks[0] : std::min(asks[0], asks[1]);
+    y[ci] = std::max(y[ci - 1] + (ask < 0.0 ? 0.25 : 0.5), ask);
+  }
+  std::vector<double> rises;
+  for (std::size_t ci = 1; ci < courses.size(); ++ci) rises.push_back(y[ci] - y[ci - 1]);
+  return rises;
 }
 
 }  // namespace knitc::knitout

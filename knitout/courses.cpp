@@ -393,10 +393,19 @@ Imported import_program(const Program& program, const Profile& profile) {
   }
   // Where both beds' loops share needle columns, each position's width (columns.hpp).
   if (!round) {
-    ColumnWidths widths = column_widths(courses, worked, static_cast<int>(spacing));
+    ColumnWidths widths = column_widths(courses, worked, loops, static_cast<int>(spacing));
+    const bool layered = widths.layered();
     pattern.cast_on_widths = std::move(widths.cast_on);
-    for (std::size_t ci = 1; ci < courses.size() && ci - 1 < widths.courses.size(); ++ci)
+    pattern.cast_on_layers = std::move(widths.cast_on_layers);
+    for (std::size_t ci = 1; ci < courses.size() && ci - 1 < widths.courses.size(); ++ci) {
       pattern.courses[ci - 1].widths = std::move(widths.courses[ci - 1]);
+      pattern.courses[ci - 1].layers = std::move(widths.layers[ci - 1]);
+    }
+    // Two layers: each course as high as its layer's loops need.
+    if (layered) {
+      const std::vector<double> rises = layer_rises(loops, course_of, courses);
+      for (std::size_t ci = 1; ci < courses.size(); ++ci) pattern.courses[ci - 1].rise = rises[ci - 1];
+    }
   }
   // A last course that binds off every stitch but the one the chain ends on is the
   // pattern's bind-off: the knitter pulls the yarn through that last loop.

@@ -89,7 +89,8 @@ double centre_x(const Layout& out, int course, int slot) {
   const double o = out.origin_x[course], W = out.loop_width;
   // Before any cluster, as whole loop widths always were: the same coordinates to the bit.
   if (out.slot_x[course][slot + 1] == o + (slot + 1) * W) return o + (slot + 0.5) * W;
-  return 0.5 * (out.slot_x[course][slot] + out.slot_x[course][slot + 1]);
+  const Span s = span_of(out, course, slot);
+  return 0.5 * (s.left + s.right);
 }
 // A loop's width: W, its share of a cluster's, or its needle position's where a machine's
 // needles set the course's widths (exactly W for every other loop, so that fabrics
@@ -97,7 +98,8 @@ double centre_x(const Layout& out, int course, int slot) {
 double width_of(const Layout& out, const Loop& l) {
   const bool by_needles = out.needle_widths[static_cast<std::size_t>(l.course)] != 0;
   if (!by_needles && (stitch(l.stitch).cluster_width <= 0.0 || l.shape == Template::tuck)) return out.loop_width;
-  return out.slot_x[l.course][l.wale + 1] - out.slot_x[l.course][l.wale];
+  const Span s = span_of(out, l.course, l.wale);
+  return s.right - s.left;
 }
 
 // A course's needle positions relative to its origin: each one's left edge and the last
@@ -113,7 +115,9 @@ Columns columns_of(const std::vector<double>& widths, double W) {
   bool uniform = true;
   for (std::size_t k = 0; k < widths.size(); ++k) {
     uniform = uniform && widths[k] == W;
-    out.centres.push_back(uniform ? (static_cast<double>(k) + 0.5) * W : out.edges.back() + 0.5 * widths[k]);
+    // A layer's position 0 wide lies over the one before it (Layout::layers).
+    if (widths[k] == 0.0 && k > 0) out.centres.push_back(out.centres.back());
+    else out.centres.push_back(uniform ? (static_cast<double>(k) + 0.5) * W : out.edges.back() + 0.5 * widths[k]);
     out.edges.push_back(uniform ? static_cast<double>(k + 1) * W : out.edges.back() + widths[k]);
   }
   return out;
@@ -125,6 +129,7 @@ Columns columns_of(const std::vector<double>& widths, double W) {
 std::vector<std::vector<double>> slot_widths(Layout& out, const Pattern& pattern, const knit_graph::Graph& graph) {
   std::vector<std::vector<double>> width(static_cast<std::size_t>(out.courses));
   out.needle_widths.assign(static_cast<std::size_t>(out.courses), 0);
+  out.layers.assign(static_cast<std::size_t>(out.courses), {});
   for (int c = 0; c < out.courses; ++c) {
     const std::size_t n = static_cast<std::size_t>(out.needle[c]);
     width[c].assign(n, out.loop_width);
@@ -133,6 +138,8 @@ std::vector<std::vector<double>> slot_widths(Layout& out, const Pattern& pattern
     if (set.size() != n) continue;
     for (std::size_t k = 0; k < n; ++k) width[c][k] = set[k] * out.loop_width;
     out.needle_widths[c] = 1;
+    const std::vector<signed char>& layers = row == 0 ? pattern.cast_on_layers : pattern.courses[row - 1].layers;
+    if (layers.size() == n) out.layers[c] = layers;
   }
   for (const knit_graph::Loop& k : graph.loops) {
     const StitchDef& s = stitch(k.stitch);
@@ -158,6 +165,14 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
   out.courses = static_cast<int>(out.needle.size());
   out.wales = out.needle.empty() ? 0 : *std::max_element(out.needle.begin(), out.needle.end());
   const auto widths = slot_widths(out, pattern, graph);
+  if (std::any_of(pattern.courses.begin(), pattern.courses.end(), [](const Course& c) { return c.rise != 1.0; })) {
+    out.heights.assign(static_cast<std::size_t>(out.courses), 0.0);
+    for (int c = 1; c < out.courses; ++c) {
+      const std::size_t row = static_cast<std::size_t>(c);  // past the last: the bind-off, a whole course up
+      out.heights[c] = out.heights[c - 1] + (row <= pattern.courses.size() ? pattern.courses[row - 1].rise : 1.0) * out.course_spacing;
+    }
+  }
+  if (std::any_of(out.layers.begin(), out.layers.end(), [](const auto& l) { return !l.empty(); })) out.layer_depth = T;
   // Per course, the plain loops (knit or purl through one loop of the course below) and
   // their parents' columns: what lines a course up over the one below.
   std::vector<std::vector<std::pair<int, int>>> plain(static_cast<std::size_t>(out.courses));  // (column, parent's column)
@@ -291,7 +306,9 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
   const double W = out.loop_width, C = out.course_spacing;
   for (std::size_t index = 0; index < out.loops.size(); ++index) {
     Loop& l = out.loops[index];
-    const glm::dvec3 origin(out.slot_x[l.course][l.wale], l.course * C, 0.0);
+    const Span span = span_of(out, l.course, l.wale);
+    const double depth = layered(out, l.course) ? out.layers[l.course][l.wale] * out.layer_depth : 0.0;
+    const glm::dvec3 origin(span.left, course_y(out, l.course), depth);
     const double d = pattern.yarns[l.yarn].diameter;
     const double w = width_of(out, l);
     for (int i = 0; i < loop_points; ++i) {
@@ -329,7 +346,7 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
       l.data_points[i] = origin + p;
     }
     // Exactly the next loop's P0, not origin + W rounded differently.
-    l.data_points[loop_points - 1] = glm::dvec3(out.slot_x[l.course][l.wale + 1], l.course * C, 0.0);
+    l.data_points[loop_points - 1] = glm::dvec3(span.right, course_y(out, l.course), depth);
   }
 }
 
@@ -401,7 +418,9 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
       // the ones below the top alternating in depth, or they would lie on one line.
       const bool many = s.family == StitchFamily::decrease && parents[i].size() > 3;
       if (many && k != top_parent(s, parents[i].size())) dz = (k % 2 ? -0.5 : -1.1) * d;
-      const glm::dvec3 shift(many ? 0.5 * (meet - px) : meet - px, (child.course - parent.course - 1) * C, dz);
+      const double up = out.heights.empty() ? (child.course - parent.course - 1) * C
+                                            : out.heights[child.course] - out.heights[parent.course] - C;
+      const glm::dvec3 shift(many ? 0.5 * (meet - px) : meet - px, up, dz);
       for (int j = 0; j < loop_points; ++j) parent.data_points[j] += head[j] * shift;
     }
     for (int j = 0; j < loop_points; ++j) child.data_points[j].x += legs[j] * (meet - cx);
@@ -527,6 +546,22 @@ int way(const Layout& layout, std::size_t index) {
   const Loop& l = layout.loops[index];
   const int course_way = layout.direction[static_cast<std::size_t>(l.course)];
   return l.against ? -course_way : course_way;
+}
+
+double course_y(const Layout& layout, int course) {
+  return layout.heights.empty() ? course * layout.course_spacing : layout.heights[static_cast<std::size_t>(course)];
+}
+
+bool layered(const Layout& layout, int course) {
+  const auto c = static_cast<std::size_t>(course);
+  return c < layout.layers.size() && !layout.layers[c].empty();
+}
+
+Span span_of(const Layout& layout, int course, int slot) {
+  const auto& edges = layout.slot_x[static_cast<std::size_t>(course)];
+  const auto s = static_cast<std::size_t>(slot);
+  if (s > 0 && edges[s + 1] == edges[s] && layered(layout, course)) return {edges[s - 1], edges[s]};
+  return {edges[s], edges[s + 1]};
 }
 
 double course_width(const Layout& layout, int course) {

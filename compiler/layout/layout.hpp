@@ -66,6 +66,15 @@ struct Layout {
   // Per course: 1 where a machine's needles set its positions' widths (Course::widths),
   // so that every loop there takes its position's width.
   std::vector<char> needle_widths;
+  // Per course where a machine knitted two layers (Course::layers): each position's
+  // layer, +1 in front, -1 behind, a position 0 wide lying over the one before it; else
+  // empty. And the y of each course, mm, where its layer's courses are fewer than the
+  // fabric's (Course::rise); empty where each lies a course spacing above the one before.
+  std::vector<std::vector<signed char>> layers;
+  std::vector<double> heights;
+  // How far in front of the fabric's middle the front layer's loops lie, and the back
+  // layer's behind it, mm.
+  double layer_depth = 0.0;
   std::vector<int> direction;     // per course: -1 worked right to left (face view), +1 left to right
   std::vector<knit_graph::Float> floats;  // slipped stitches' floats, course by course
   // Per float: the points (course-local, left to right) a caught float is lifted through,
@@ -88,6 +97,20 @@ int way(const Layout& layout, std::size_t index);
 
 // Per loop: 1 for a bobble's loops (its rows and the loop that gathers them), else 0.
 std::vector<char> in_bobbles(const Layout& layout);
+
+// The y of a course's loops' feet, mm: `course` course spacings up, or its layer's
+// height (Layout::heights).
+double course_y(const Layout& layout, int course);
+
+// Whether a course's loops lie in two layers (Layout::layers).
+bool layered(const Layout& layout, int course);
+
+// Needle position `slot` of a course, mm: from its left edge to its right, a layer's
+// position over the one before it spanning that one's.
+struct Span {
+  double left = 0.0, right = 0.0;
+};
+Span span_of(const Layout& layout, int course, int slot);
 
 // The width of a course, mm: from its first needle position's left edge to its last's right.
 double course_width(const Layout& layout, int course);

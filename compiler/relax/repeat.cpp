@@ -126,6 +126,9 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
     if (f.caught_by >= 0) return std::nullopt;
   if (!layout.wraps.empty()) return std::nullopt;  // a winding spans its group's loops
   if (!layout.bobbles.empty()) return std::nullopt;  // a bobble's rows share one needle position
+  // Two layers: positions over each other, courses at their layers' heights.
+  if (!layout.heights.empty() || std::any_of(layout.layers.begin(), layout.layers.end(), [](const auto& l) { return !l.empty(); }))
+    return std::nullopt;
   for (const auto& loop : layout.loops)  // bound off within a row: the columns change
     if (loop.shape == layout::Template::bind_off && loop.course + 1 < layout.courses) return std::nullopt;
   // Every needle position one lattice step wide (the loop width; relax() passes a machine's

@@ -154,9 +154,13 @@ std::vector<Piece> trace_smooth(const Layout& layout) {
       } else if (course == b.last_course) {
         // Needle positions passed by within the course, or a cable's sinker loop crossing
         // behind it: a float, behind unless slipped wyif.
-        if (std::abs(layout.loops[index].wale - b.last_wale) > 1 || std::abs(start.x - b.last_local.x) > 0.5 * W) {
+        // Two layers: the other layer's positions are not passed by, and a float runs
+        // between the layers.
+        const bool layered = layout::layered(layout, course);
+        if ((!layered && std::abs(layout.loops[index].wale - b.last_wale) > 1) || std::abs(start.x - b.last_local.x) > 0.5 * W) {
           const int f = float_over(layout, course, y, b.last_local.x, start.x);
-          const double z = f >= 0 && layout.floats[static_cast<std::size_t>(f)].in_front ? layout.float_in_front : layout.float_behind;
+          double z = f >= 0 && layout.floats[static_cast<std::size_t>(f)].in_front ? layout.float_in_front : layout.float_behind;
+          if (layered) z = 0.0;
           const auto* lift = f >= 0 && !layout.float_lifts.empty() ? &layout.float_lifts[static_cast<std::size_t>(f)] : nullptr;
           if (lift && !lift->empty()) {
             // Caught: up to the loop that lifts it and back down, through its lift points
