@@ -109,25 +109,10 @@ long spacing_of(const std::vector<RawCourse>& courses, bool round) {
 ColumnWidths column_widths(const std::vector<RawCourse>& courses, const std::vector<std::vector<char>>& worked,
                            const std::vector<Loop>& loops, int spacing) {
   ColumnWidths out;
-  long shared = 0, both = 0, one = 0;
-  for (std::size_t ci = 1; ci < courses.size(); ++ci)
-    for (std::size_t j = 0; j + 1 < courses[ci].positions.size(); ++j)
-      if (column_of(courses[ci].positions[j]) == column_of(courses[ci].positions[j + 1])) {
-        ++shared;
-        both += worked[ci][j] && worked[ci][j + 1];
-        one += worked[ci][j] != worked[ci][j + 1];
-      }
-  if (courses.empty() || shared == 0) return out;
-  const bool mixed = 10 * both < 9 * shared && 10 * one < 9 * shared;
-  // Two layers are the fabric's, most of its loops in them: not a few double-bed courses
-  // in a sheet (a cable's, a short row's), which keep whole positions.
-  std::size_t positions = 0;
-  for (std::size_t ci = 1; ci < courses.size(); ++ci) positions += courses[ci].positions.size();
-  if (mixed && 4 * static_cast<std::size_t>(shared) < positions) return out;
-  const Arrangement how = mixed ? Arrangement::layered : Arrangement::side_by_side;
-  // Per position of a course: its loop made next to its column's other one along one
-  // yarn (a rib's stitches, in a layer's course drawn side by side).
-  auto paired = [&](const RawCourse& c) {
+  if (courses.empty()) return out;
+  // Per position of each course: its loop made next to its column's other one along one
+  // yarn (a rib's stitches).
+  auto paired_in = [&](const RawCourse& c) {
     std::vector<char> next(c.positions.size(), 0);
     std::unordered_map<int, std::size_t> at;  // loop -> its place in c.made
     for (std::size_t i = 0; i < c.made.size(); ++i) at[c.made[i]] = i;
@@ -146,11 +131,42 @@ ColumnWidths column_widths(const std::vector<RawCourse>& courses, const std::vec
     }
     return next;
   };
-  Columns cast_on = needle_columns(courses[0].positions, std::vector<char>(courses[0].positions.size(), 1), paired(courses[0]), spacing, how);
+  std::vector<std::vector<char>> paired;
+  for (const RawCourse& c : courses) paired.push_back(paired_in(c));
+  // The yarn a position's loop was made with this course, or -1.
+  auto yarn_at = [&](const RawCourse& c, const std::vector<char>& made_here, std::size_t j) {
+    if (!made_here[j]) return -1;
+    for (auto l = c.positions[j].pile.rbegin(); l != c.positions[j].pile.rend(); ++l) {
+      const Loop& loop = loops[static_cast<std::size_t>(*l)];
+      if (!loop.carriers.empty()) return loop.carriers.front();
+    }
+    return -1;
+  };
+  long shared = 0, both = 0, one = 0, rib = 0;  // columns holding two loops; both worked, one; both with one yarn
+  std::size_t positions = 0;
+  for (std::size_t ci = 1; ci < courses.size(); ++ci) {
+    positions += courses[ci].positions.size();
+    for (std::size_t j = 0; j + 1 < courses[ci].positions.size(); ++j)
+      if (column_of(courses[ci].positions[j]) == column_of(courses[ci].positions[j + 1])) {
+        ++shared;
+        both += worked[ci][j] && worked[ci][j + 1];
+        one += worked[ci][j] != worked[ci][j + 1];
+        rib += worked[ci][j] && worked[ci][j + 1] && yarn_at(courses[ci], worked[ci], j) == yarn_at(courses[ci], worked[ci], j + 1);
+      }
+  }
+  if (shared == 0) return out;
+  // Side by side: a course knits both of nearly every column with one yarn (a full-needle
+  // rib, a Milano rib), or one of them (an interlock). Else two layers, where they
+  // are the fabric's, most of its loops in them: not a few double-bed courses in a sheet
+  // (a cable's, a short row's), which keep whole positions.
+  const bool side = (10 * both >= 9 * shared && 10 * rib >= 9 * both) || 10 * one >= 9 * shared;
+  if (!side && 4 * static_cast<std::size_t>(shared) < positions) return out;
+  const Arrangement how = side ? Arrangement::side_by_side : Arrangement::layered;
+  Columns cast_on = needle_columns(courses[0].positions, std::vector<char>(courses[0].positions.size(), 1), paired[0], spacing, how);
   out.cast_on = std::move(cast_on.widths);
   out.cast_on_layers = std::move(cast_on.layers);
   for (std::size_t ci = 1; ci < courses.size(); ++ci) {
-    Columns c = needle_columns(courses[ci].positions, worked[ci], paired(courses[ci]), spacing, how);
+    Columns c = needle_columns(courses[ci].positions, worked[ci], paired[ci], spacing, how);
     out.courses.push_back(std::move(c.widths));
     out.layers.push_back(std::move(c.layers));
   }

@@ -55,13 +55,13 @@ Cut cut_courses(const Program& program, Machine& machine) {
       bool passed = turns(went);
       for (const Run& r : went)
         passed = passed || (std::find(op.carriers.begin(), op.carriers.end(), r.carrier) != op.carriers.end() && r.on(side) && r.passes(x));
-      // A carrier turning back into a new pass while another's course is open (a spacer's
-      // layer after the tucks between them, a jacquard's next colour): the pass starts the
-      // next course if it goes on to stitch where this course already has, or its first
-      // loops would be drawn a course low.
+      // A carrier turning back into a new pass on needles this course has not stitched (a
+      // spacer's layer after the tucks between them, a jacquard's next colour, a rib's
+      // pass starting on the other bed): the pass starts the next course if it goes on to
+      // stitch where this course already has, or its first loops would be drawn a course
+      // low.
       const auto last = last_way.find(op.carriers.front());
-      if (!passed && last != last_way.end() && last->second != op.direction && op.direction != 0 &&
-          std::none_of(went.begin(), went.end(), [&](const Run& r) { return r.carrier == op.carriers.front(); }))
+      if (!passed && last != last_way.end() && last->second != op.direction && op.direction != 0)
         for (std::size_t k = i + 1; k < program.operations.size() && !passed; ++k) {
           const Operation& next = program.operations[k];
           const bool stitches = next.op == Opcode::knit || next.op == Opcode::tuck || next.op == Opcode::split;
