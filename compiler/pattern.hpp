@@ -84,8 +84,9 @@ struct Course {
   // lies over the one before it, in its column); empty for one layer.
   std::vector<signed char> layers;
   // How far the course lies above the one before, in course spacings: less than one
-  // where it knits only loops of courses further down, its layer's courses being fewer
-  // than the fabric's (a spacer's tucks between its layers' courses).
+  // where its loops were pulled through loops of courses further down, a layer's courses
+  // being fewer than the fabric's (knitout/: a spacer's tucks between its layers'
+  // courses, a double jacquard's colours' passes).
   double rise = 1.0;
   bool operator==(const Course& o) const {
     return ops == o.ops && side == o.side && widths == o.widths && layers == o.layers && rise == o.rise;

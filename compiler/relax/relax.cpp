@@ -368,7 +368,9 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
     // cast-on's loops stand in (one repeat up) for the children of the last course's. The
     // repeat's size follows the strain its constraints ask for (see Size).
     if (layout.knitting == Knitting::flat)
-      period = glm::dvec2(layout.wales * layout.loop_width, layout.courses * layout.course_spacing);
+      period = glm::dvec2(layout.wales * layout.loop_width,
+                          layout.heights.empty() ? layout.courses * layout.course_spacing  // as always, to the bit
+                                                 : layout::course_y(layout, layout.courses - 1) + layout.course_spacing);
   }
   if (start && (start->period.x > 0.0 || start->period.y > 0.0)) period = start->period;
   const int threads = thread_count(options.threads);
