@@ -40,6 +40,7 @@ struct ColumnWidths {
   std::vector<signed char> cast_on_layers;
   std::vector<std::vector<double>> courses;  // courses[c - 1]: after RawCourse c
   std::vector<std::vector<signed char>> layers;
+  bool in_turn = false;  // the beds knit in turn (an interlock): each bed's loops span two courses
   bool layered() const { return !cast_on_layers.empty() || std::any_of(layers.begin(), layers.end(), [](const auto& l) { return !l.empty(); }); }
 };
 ColumnWidths column_widths(const std::vector<RawCourse>& courses, const std::vector<std::vector<char>>& worked,

@@ -394,7 +394,7 @@ Imported import_program(const Program& program, const Profile& profile) {
   // Where both beds' loops share needle columns, each position's width (columns.hpp).
   if (!round) {
     ColumnWidths widths = column_widths(courses, worked, loops, static_cast<int>(spacing));
-    const bool layered = widths.layered();
+    const bool layered = widths.layered() || widths.in_turn;
     pattern.cast_on_widths = std::move(widths.cast_on);
     pattern.cast_on_layers = std::move(widths.cast_on_layers);
     for (std::size_t ci = 1; ci < courses.size() && ci - 1 < widths.courses.size(); ++ci) {

@@ -349,6 +349,16 @@ TEST(KnitoutImport, BothBedsLoopsInOneNeedleColumnShareItsWidth) {
     }
     EXPECT_EQ(pairs, 12);
   }
+  // Each bed knits every other course, so the courses rise half a course each and every
+  // loop stands a course above the one it was pulled through (two courses, twice as
+  // tall as an interlock's, before 2026-12-07).
+  const knit_graph::Graph graph = knit_graph::build(inter);
+  for (std::size_t i = 0; i < graph.loops.size(); ++i) {
+    const auto& k = graph.loops[i];
+    if (k.course < 3 || k.parents.size() != 1) continue;
+    const int below = graph.loops[static_cast<std::size_t>(k.parents.front())].course;
+    EXPECT_NEAR(layout::course_y(two, k.course) - layout::course_y(two, below), two.course_spacing, 1e-9) << "loop " << i;
+  }
 
   // A rib on alternate needles of each bed is full gauge: its loops are as wide as a
   // jersey's, one needle pitch, whole positions.
