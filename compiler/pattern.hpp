@@ -74,9 +74,11 @@ struct Course {
   std::vector<Op> ops;
   Side side = Side::right;  // wrong-side rows are worked left to right, seen from the back
   SourceLocation where;     // not part of the fabric: equality ignores it
-  // Per live stitch after the course, the width of its needle position in loop widths,
-  // where a machine's needles set it (knitout/: a full-needle rib's two beds' loops share
-  // one position's width); empty where each is one loop width.
+  // Per column after the course (its live stitches and those it bound off, in order), the
+  // width of its needle position in loop widths, where a machine's needles set it
+  // (knitout/: a full-needle rib's two beds' loops share one position's width, a split
+  // bind-off's loop the column of the stitch it bound off); empty where each is one loop
+  // width.
   std::vector<double> widths;
   // Per live stitch after the course, where a machine knits two layers over each other
   // (a spacer fabric, a double jacquard): +1 a front-bed loop, drawn in front, -1 a

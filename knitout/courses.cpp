@@ -103,6 +103,10 @@ Imported import_program(const Program& program, const Profile& profile) {
   const StitchId k = stitch_id("k"), p = stitch_id("p"), yo = stitch_id("yo"), tuck = stitch_id("tuck"),
                  held = stitch_id("held"), kfb = stitch_id("kfb"), pfb = stitch_id("pfb");
   std::vector<int> on_needles;  // the loops stitch_of names
+  std::vector<double> live_x;   // flat: each live stitch's place across the beds (Position::x)
+  // Per course, the yarn overs (op indexes) made in the column of the stitch worked just
+  // before them.
+  std::vector<std::vector<std::size_t>> shared_column(courses.size());
   std::vector<char> placed(loops.size(), 0), split_parent(loops.size(), 0);
   int approximated = 0;
   // Per course after the cast-on, where it made a loop (for the needles' widths, below).
@@ -143,6 +147,7 @@ Imported import_program(const Program& program, const Profile& profile) {
           on_needles.push_back(l);
         }
       live = pos.size();
+      for (const Position& q : pos) live_x.push_back(q.x);
       continue;
     }
     Course course;
@@ -245,7 +250,13 @@ Imported import_program(const Program& program, const Profile& profile) {
     if (!odd.empty()) unsupported(odd, "");
     for (std::size_t j = 0; j < pos.size();) {
       const Info& f = info[j];
-      while (next < live && !used[next]) emit(bound[next] ? bo : drop, course_yarn), ++next;
+      // The stitches left unworked before this one: bound off or dropped. Before a new loop
+      // through none of them (a yarn over, a split's loop), in flat work only those to its
+      // left, so that it stands where the machine made it (a split bind-off leaves a loop
+      // over each stitch it binds off, not a row of them past the last).
+      const bool through_none = f.kind != Kind::partner && f.stitches.empty();
+      while (next < live && !used[next] && (round || !through_none || live_x[next] <= pos[j].x))
+        emit(bound[next] ? bo : drop, course_yarn), ++next;
       const bool purl_side = purl_at(pos[j], f.loop);
       if (f.kind == Kind::partner) {
         // A split's old loops beside its new loop: an increase, both loops through the stitch.
@@ -263,6 +274,14 @@ Imported import_program(const Program& program, const Profile& profile) {
       const bool contiguous = !f.stitches.empty() && static_cast<std::size_t>(f.stitches.front()) == next &&
                               f.stitches.back() - f.stitches.front() + 1 == static_cast<int>(f.stitches.size());
       if (f.stitches.empty()) {
+        // Made in the needle column of the stitch just worked (a split bind-off's loop,
+        // over the stitch bound off, or the chain's last loop): the two share the column.
+        if (!round && next > 0 && !course.ops.empty()) {
+          const StitchDef& before = stitch(course.ops.back().stitch);
+          const bool bound_there = course.ops.back().stitch == bo && std::abs(live_x[next - 1] - pos[j].x) < 0.5;
+          const bool knitted_there = before.consumes == 1 && before.produces == 1 && j > 0 && std::abs(pos[j - 1].x - pos[j].x) < 0.5;
+          if (bound_there || knitted_there) shared_column[ci].push_back(course.ops.size());
+        }
         emit(yo, f.loop >= 0 ? yarn_for(f.loop) : course_yarn);
         ++j;
         continue;
@@ -359,6 +378,7 @@ Imported import_program(const Program& program, const Profile& profile) {
       // Drawn approximately: each live stitch through as many stitches of the course before
       // as its loops came from, in order; the rest bound off.
       course.ops.clear();
+      shared_column[ci].clear();
       std::size_t taken = 0;
       for (std::size_t j = 0; j < pos.size(); ++j) {
         const Info& f = info[j];
@@ -387,6 +407,8 @@ Imported import_program(const Program& program, const Profile& profile) {
         on_needles.push_back(l);
       }
     live = pos.size();
+    live_x.clear();
+    for (const Position& q : pos) live_x.push_back(q.x);
     worked[ci].resize(pos.size());
     for (std::size_t j = 0; j < pos.size(); ++j) worked[ci][j] = info[j].kind == Kind::made || info[j].kind == Kind::tucked;
     pattern.courses.push_back(std::move(course));
@@ -405,6 +427,23 @@ Imported import_program(const Program& program, const Profile& profile) {
     if (layered) {
       const std::vector<double> rises = layer_rises(loops, course_of, courses);
       for (std::size_t ci = 1; ci < courses.size(); ++ci) pattern.courses[ci - 1].rise = rises[ci - 1];
+    }
+  }
+  // A loop made in the column of the stitch just worked shares it: each half of it
+  // (Course::widths, one per column: the live stitches and those bound off). Where the
+  // needles set the course's widths already, theirs are kept.
+  for (std::size_t ci = 1; ci < courses.size(); ++ci) {
+    Course& course = pattern.courses[ci - 1];
+    if (shared_column[ci].empty() || !course.widths.empty()) continue;
+    std::vector<std::size_t>::const_iterator shared = shared_column[ci].begin();
+    for (std::size_t i = 0; i < course.ops.size(); ++i) {
+      const int slots = course.ops[i].stitch == bo ? 1 : stitch(course.ops[i].stitch).produces;
+      const bool half = shared != shared_column[ci].end() && *shared == i;
+      if (half) {
+        course.widths.back() = 0.5;
+        ++shared;
+      }
+      course.widths.insert(course.widths.end(), static_cast<std::size_t>(slots), half ? 0.5 : 1.0);
     }
   }
   // A last course that binds off every stitch but the one the chain ends on is the

@@ -245,6 +245,50 @@ TEST(KnitoutImport, TransfersSayDecreasesByWhichLoopLiesOnTopAndCablesByWhichSet
   EXPECT_EQ(cross.name, "C4F");
 }
 
+// KnitScript's bind-off (ks-cable_swatch_2_cable.k's): from the right, each stitch moved
+// onto the back needle left of it, split there (a new loop left on the back needle, the
+// old moved onto the front needle beside) and knitted together with that needle's stitch;
+// then a row knits the loops the splits left. Each split loop stands over the stitch bound
+// off in its column, the two sharing it, so the row is as wide as the sheet (until
+// 2026-12-07 the split loops were drawn past the last stitch bound off: twice as wide).
+TEST(KnitoutImport, ASplitBindOffLeavesEachSplitLoopOverTheStitchItBoundOff) {
+  const int n = 8;
+  std::string k = jersey(n, 2);
+  k.resize(k.size() - std::string("outhook 3\n").size());
+  for (int i = n; i >= 2; --i) {
+    const std::string to = std::to_string(i - 1);
+    k += "rack 1\nxfer f" + std::to_string(i) + " b" + to + "\nrack 0\nsplit + b" + to + " f" + to + " 3\nknit - f" + to + " 3\n";
+  }
+  for (int i = 1; i < n; ++i) k += "knit + b" + std::to_string(i) + " 3\n";
+  const Pattern p = import_text(k + "outhook 3\n", "bind-off.k").pattern;
+  ASSERT_EQ(p.courses.size(), 4u);
+  // The bind-off's course, from the left: the chain's last loop (f1) and the loop split
+  // over it, then each stitch bound off with the loop split over it, and last the first
+  // split (on b7, through f8's stitch, moved there: a purl).
+  std::vector<std::string> want{"k", "yo"};
+  for (int i = 2; i < n; ++i) want.insert(want.end(), {"bo", i + 1 < n ? "yo" : "p"});
+  EXPECT_EQ(test::names(p.courses[2]), want);
+  const layout::Layout laid = layout::lay_out(p);
+  const double W = laid.loop_width;
+  auto width = [&](int c) { return laid.slot_x[static_cast<std::size_t>(c)].back() - laid.slot_x[static_cast<std::size_t>(c)].front(); };
+  EXPECT_NEAR(width(3), n * W, 1e-9);      // the bind-off: each column shared
+  EXPECT_NEAR(width(4), n * W, 1e-9);  // the split loops knitted, the chain's last held
+  // Each split loop within the column of a stitch of the row below (at most half a loop
+  // width from its middle: the stitch bound off shares the column), and knitted by the
+  // last row's loop over it.
+  int split_loops = 0;
+  for (const layout::Loop& l : laid.loops) {
+    if (l.course != 3 || stitch(l.stitch).name != "yo") continue;
+    ++split_loops;
+    const double x = middle_x(l);
+    double nearest = 1e9;
+    for (const layout::Loop& below : laid.loops)
+      if (below.course == 2) nearest = std::min(nearest, std::abs(middle_x(below) - x));
+    EXPECT_LE(nearest, 0.5 * W + 1e-9) << "a split loop at x " << x << " mm stands over no stitch of the row below";
+  }
+  EXPECT_EQ(split_loops, n - 2);
+}
+
 TEST(KnitoutImport, HandDerivedLoopCountsOfSmallRealPrograms) {
   KNITC_NEED_SHARED(real("cmu-helloworld.k"));
   // helloworld: 20 tucks on f1..f20, then 20 rows of 20 knits, all on the front bed.
