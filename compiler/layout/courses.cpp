@@ -1,0 +1,203 @@
+// The courses of the layout: each course's needle positions (their widths, where each
+// course starts, which way it is worked, how high it lies) and where a loop of it is
+// across and up, for the layout's passes (layout.cpp) and the stages after it.
+#include "layout/courses.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+namespace knitc::layout {
+
+// x of a needle position's centre in its course.
+double centre_x(const Layout& out, int course, int slot) {
+  const double o = out.origin_x[course], W = out.loop_width;
+  // Before any cluster, as whole loop widths always were: the same coordinates to the bit.
+  if (out.slot_x[course][slot + 1] == o + (slot + 1) * W) return o + (slot + 0.5) * W;
+  const Span s = span_of(out, course, slot);
+  return 0.5 * (s.left + s.right);
+}
+// A loop's width: W, its share of a cluster's, or its needle position's where a machine's
+// needles set the course's widths (exactly W for every other loop, so that fabrics
+// without either keep their coordinates to the bit).
+double width_of(const Layout& out, const Loop& l) {
+  const bool by_needles = out.needle_widths[static_cast<std::size_t>(l.course)] != 0;
+  if (!by_needles && (stitch(l.stitch).cluster_width <= 0.0 || l.shape == Template::tuck)) return out.loop_width;
+  const Span s = span_of(out, l.course, l.wale);
+  return s.right - s.left;
+}
+
+namespace {
+
+// A course's needle positions relative to its origin: each one's left edge and the last
+// one's right (one more than the positions), and their centres. Up to the first cluster
+// whole loop widths are multiplied, not summed, so that a fabric without clusters keeps
+// the very same coordinates.
+struct Columns {
+  std::vector<double> edges, centres;
+};
+Columns columns_of(const std::vector<double>& widths, double W) {
+  Columns out;
+  out.edges.push_back(0.0);
+  bool uniform = true;
+  for (std::size_t k = 0; k < widths.size(); ++k) {
+    uniform = uniform && widths[k] == W;
+    // A layer's position 0 wide lies over the one before it (Layout::layers).
+    if (widths[k] == 0.0 && k > 0) out.centres.push_back(out.centres.back());
+    else out.centres.push_back(uniform ? (static_cast<double>(k) + 0.5) * W : out.edges.back() + 0.5 * widths[k]);
+    out.edges.push_back(uniform ? static_cast<double>(k + 1) * W : out.edges.back() + widths[k]);
+  }
+  return out;
+}
+
+// The width of each needle position after each course, mm: W, a machine's needles' share
+// (Course::widths; the bind-off's, the last course's), or a cluster's share. Marks the
+// courses whose widths the needles set.
+std::vector<std::vector<double>> slot_widths(Layout& out, const Pattern& pattern, const knit_graph::Graph& graph) {
+  std::vector<std::vector<double>> width(static_cast<std::size_t>(out.courses));
+  out.needle_widths.assign(static_cast<std::size_t>(out.courses), 0);
+  out.layers.assign(static_cast<std::size_t>(out.courses), {});
+  for (int c = 0; c < out.courses; ++c) {
+    const std::size_t n = static_cast<std::size_t>(out.needle[c]);
+    width[c].assign(n, out.loop_width);
+    const std::size_t row = std::min(static_cast<std::size_t>(c), pattern.courses.size());  // past the last: the bind-off
+    const std::vector<double>& set = row == 0 ? pattern.cast_on_widths : pattern.courses[row - 1].widths;
+    if (set.size() != n) continue;
+    for (std::size_t k = 0; k < n; ++k) width[c][k] = set[k] * out.loop_width;
+    out.needle_widths[c] = 1;
+    const std::vector<signed char>& layers = row == 0 ? pattern.cast_on_layers : pattern.courses[row - 1].layers;
+    if (layers.size() == n) out.layers[c] = layers;
+  }
+  for (const knit_graph::Loop& k : graph.loops) {
+    const StitchDef& s = stitch(k.stitch);
+    if (s.cluster_width > 0.0 && !k.held) width[k.course][k.slot] = s.cluster_width * out.loop_width / s.produces;
+  }
+  return width;
+}
+
+}  // namespace
+
+// The courses: their needles, where each starts, which way each is worked.
+Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, bool bind_off) {
+  Layout out;
+  const Gauge& g = pattern.gauge;
+  const double W = g.loop_width, T = g.thickness;
+  double thickest = 0.0;
+  for (const Yarn& y : pattern.yarns) thickest = std::max(thickest, y.diameter);
+  out.knitting = pattern.knitting;
+  out.loop_width = W;
+  out.course_spacing = g.course_spacing();
+  out.float_behind = -(0.3 * T + 0.6 * thickest);
+  out.float_in_front = T + 0.6 * thickest;
+  out.needle = graph.columns;
+  if (bind_off) out.needle.push_back(static_cast<int>(graph.live.size()));
+  out.courses = static_cast<int>(out.needle.size());
+  out.wales = out.needle.empty() ? 0 : *std::max_element(out.needle.begin(), out.needle.end());
+  const auto widths = slot_widths(out, pattern, graph);
+  if (std::any_of(pattern.courses.begin(), pattern.courses.end(), [](const Course& c) { return c.rise != 1.0; })) {
+    out.heights.assign(static_cast<std::size_t>(out.courses), 0.0);
+    for (int c = 1; c < out.courses; ++c) {
+      const std::size_t row = static_cast<std::size_t>(c);  // past the last: the bind-off, a whole course up
+      out.heights[c] = out.heights[c - 1] + (row <= pattern.courses.size() ? pattern.courses[row - 1].rise : 1.0) * out.course_spacing;
+    }
+  }
+  if (std::any_of(out.layers.begin(), out.layers.end(), [](const auto& l) { return !l.empty(); })) out.layer_depth = T;
+  // Per course, the plain loops (knit or purl through one loop of the course below) and
+  // their parents' columns: what lines a course up over the one below.
+  std::vector<std::vector<std::pair<int, int>>> plain(static_cast<std::size_t>(out.courses));  // (column, parent's column)
+  for (const knit_graph::Loop& k : graph.loops) {
+    if (k.course == 0 || k.parents.size() != 1 || k.held || stitch(k.stitch).family == StitchFamily::cable) continue;
+    const knit_graph::Loop& parent = graph.loops[static_cast<std::size_t>(k.parents.front())];
+    if (parent.course == k.course - 1) plain[k.course].push_back({k.slot, parent.slot});
+  }
+  if (bind_off)
+    for (std::size_t s = 0; s < graph.live.size(); ++s)
+      if (graph.live[s].size() == 1) plain.back().push_back({static_cast<int>(s), graph.loops[graph.live[s].front()].slot});
+  for (int c = 0; c < out.courses; ++c) {
+    const double width = std::accumulate(widths[c].begin(), widths[c].end(), 0.0);
+    const Columns columns = columns_of(widths[c], W);
+    // A tube starts each round at angle zero. Flat work: each course where its plain
+    // loops lie over their parents (the median of their offsets), so that stitches bound
+    // off or decreased at one edge leave the rest in place; with none, centred over the
+    // course below.
+    double origin = 0.0;
+    if (pattern.knitting == Knitting::flat && c > 0) {
+      const double below = out.origin_x[c - 1], below_width = out.slot_x[c - 1].back() - below;
+      origin = below + 0.5 * (below_width - width);
+      if (!plain[c].empty()) {
+        std::vector<double> offsets;
+        for (const auto& [column, parent] : plain[c])
+          offsets.push_back(centre_x(out, c - 1, parent) - columns.centres[static_cast<std::size_t>(column)]);
+        std::sort(offsets.begin(), offsets.end());
+        const std::size_t n = offsets.size();
+        origin = n % 2 ? offsets[n / 2] : 0.5 * (offsets[n / 2 - 1] + offsets[n / 2]);
+      }
+    }
+    out.origin_x.push_back(origin);
+    std::vector<double>& edges = out.slot_x.emplace_back();
+    for (double e : columns.edges) edges.push_back(origin + e);
+    int direction = -1;  // in the round every course runs right to left
+    if (pattern.knitting == Knitting::flat) {
+      if (c == 0) direction = !pattern.courses.empty() && pattern.courses.front().side == Side::wrong ? -1 : 1;
+      else if (c <= static_cast<int>(pattern.courses.size())) direction = pattern.courses[c - 1].side == Side::right ? -1 : 1;
+      else direction = -out.direction.back();  // the bind-off turns like any row
+    }
+    out.direction.push_back(direction);
+  }
+  out.floats = graph.floats;
+  out.wraps = graph.wraps;
+  out.bobbles = graph.bobbles;
+  return out;
+}
+
+int way(const Layout& layout, std::size_t index) {
+  const Loop& l = layout.loops[index];
+  const int course_way = layout.direction[static_cast<std::size_t>(l.course)];
+  return l.against ? -course_way : course_way;
+}
+
+double course_y(const Layout& layout, int course) {
+  return layout.heights.empty() ? course * layout.course_spacing : layout.heights[static_cast<std::size_t>(course)];
+}
+
+bool layered(const Layout& layout, int course) {
+  const auto c = static_cast<std::size_t>(course);
+  return c < layout.layers.size() && !layout.layers[c].empty();
+}
+
+Span span_of(const Layout& layout, int course, int slot) {
+  const auto& edges = layout.slot_x[static_cast<std::size_t>(course)];
+  const auto s = static_cast<std::size_t>(slot);
+  if (s > 0 && edges[s + 1] == edges[s] && layered(layout, course)) return {edges[s - 1], edges[s]};
+  return {edges[s], edges[s + 1]};
+}
+
+double course_width(const Layout& layout, int course) {
+  const auto& edges = layout.slot_x[static_cast<std::size_t>(course)];
+  return edges.back() - edges.front();
+}
+
+glm::dvec3 to_fabric(const Layout& layout, const glm::dvec3& p, int course) {
+  if (layout.knitting == Knitting::flat) return p;
+  const double circumference = course_width(layout, course);
+  if (circumference <= 0.0) return p;
+  return roll(p, circumference, layout.course_spacing);
+}
+
+glm::dvec3 roll(const glm::dvec3& p, double circumference, double climb) {
+  const double turn = p.x / circumference;  // 0 at needle position 0, 1 a round later
+  const double angle = 2.0 * std::numbers::pi * turn - std::numbers::pi;
+  const double r = circumference / (2.0 * std::numbers::pi) + p.z;
+  // Worked right to left, a round climbs one course from x = circumference to x = 0.
+  return {r * std::sin(angle), p.y + climb * (1.0 - turn), r * std::cos(angle)};
+}
+
+glm::dvec3 unroll(const glm::dvec3& q, double circumference, double climb, double near_x) {
+  const double angle = std::atan2(q.x, q.z);
+  double turn = (angle + std::numbers::pi) / (2.0 * std::numbers::pi);
+  turn += std::round(near_x / circumference - turn);
+  return {turn * circumference, q.y - climb * (1.0 - turn), std::hypot(q.x, q.z) - circumference / (2.0 * std::numbers::pi)};
+}
+
+}  // namespace knitc::layout
