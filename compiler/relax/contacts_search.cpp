@@ -286,15 +286,18 @@ void Contacts::find(const Chains& c) {
   ++full_finds_;
   built_at_ = c.pos;
   // The sides of the pairs listed so far, to look up by (a, b, image): the full list's
-  // live pairs and those found again since (their keys apart).
-  std::vector<Pair> live;
-  live.reserve(pairs_.size());
-  for (const std::uint32_t k : by_segments_)
-    if (!(pairs_[k].held & dead)) live.push_back(pairs_[k]);
+  // live pairs and those found again since (their keys apart), merged as they are read
+  // (a hat's list is some 20 million pairs: a copy of them first doubled the memory).
   std::vector<Pair> previous;
-  previous.reserve(live.size() + extra_.size());
-  std::merge(live.begin(), live.end(), extra_.begin(), extra_.end(), std::back_inserter(previous), key_before);
-  live = {};
+  previous.reserve(by_segments_.size() + extra_.size());
+  auto again = extra_.cbegin();
+  for (const std::uint32_t k : by_segments_) {
+    const Pair& p = pairs_[k];
+    if (p.held & dead) continue;
+    while (again != extra_.cend() && key_before(*again, p)) previous.push_back(*again++);
+    previous.push_back(p);
+  }
+  previous.insert(previous.end(), again, extra_.cend());
   pairs_.clear();
   extra_.clear();
   wandered_.clear();

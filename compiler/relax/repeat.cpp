@@ -97,8 +97,15 @@ int periodic_run(const std::vector<glm::dvec3>& points, std::size_t from, std::s
   return across;
 }
 
+namespace {
+// Whether a machine's needles set some course's positions' widths (Course::widths).
+bool needles_set_widths(const layout::Layout& layout) {
+  return std::find(layout.needle_widths.begin(), layout.needle_widths.end(), 1) != layout.needle_widths.end();
+}
+}  // namespace
+
 double lattice_step(const layout::Layout& layout) {
-  if (std::find(layout.needle_widths.begin(), layout.needle_widths.end(), 1) == layout.needle_widths.end()) return layout.loop_width;
+  if (!needles_set_widths(layout)) return layout.loop_width;
   std::map<long long, std::pair<std::size_t, double>> widths;  // by the width in millionths of a loop width: count, a width
   for (const auto& edges : layout.slot_x)
     for (std::size_t k = 1; k < edges.size(); ++k) {
@@ -127,8 +134,7 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   if (!layout.wraps.empty()) return std::nullopt;  // a winding spans its group's loops
   if (!layout.bobbles.empty()) return std::nullopt;  // a bobble's rows share one needle position
   // Two layers: positions over each other, courses at their layers' heights.
-  if (!layout.heights.empty() || std::any_of(layout.layers.begin(), layout.layers.end(), [](const auto& l) { return !l.empty(); }))
-    return std::nullopt;
+  if (!layout.heights.empty() || layout.layer_depth > 0.0) return std::nullopt;
   for (const auto& loop : layout.loops)  // bound off within a row: the columns change
     if (loop.shape == layout::Template::bind_off && loop.course + 1 < layout.courses) return std::nullopt;
   // Every needle position one lattice step wide (the loop width; relax() passes a machine's
@@ -145,7 +151,7 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
     }
     return true;
   };
-  const bool by_needles = std::find(layout.needle_widths.begin(), layout.needle_widths.end(), 1) != layout.needle_widths.end();
+  const bool by_needles = needles_set_widths(layout);
   if (!by_needles && !on_lattice(0, layout.courses - 1, 0, layout.wales)) return std::nullopt;
   const LoopGrid g = grid_of(layout);
   // The interior, less up to `most_trimmed` more courses at either end where those do not
