@@ -204,4 +204,19 @@ std::vector<double> layer_rises(const std::vector<Loop>& loops, const std::vecto
   return rises;
 }
 
+void share_columns(Course& course, const std::vector<std::size_t>& shared) {
+  if (shared.empty() || !course.widths.empty()) return;
+  const StitchId bo = stitch_id("bo");
+  auto next = shared.begin();
+  for (std::size_t i = 0; i < course.ops.size(); ++i) {
+    const int slots = course.ops[i].stitch == bo ? 1 : stitch(course.ops[i].stitch).produces;
+    const bool half = next != shared.end() && *next == i;
+    if (half) {
+      course.widths.back() = 0.5;
+      ++next;
+    }
+    course.widths.insert(course.widths.end(), static_cast<std::size_t>(slots), half ? 0.5 : 1.0);
+  }
+}
+
 }  // namespace knitc::knitout

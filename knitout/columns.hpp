@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cut.hpp"
+#include "pattern.hpp"
 
 namespace knitc::knitout {
 
@@ -55,5 +56,12 @@ ColumnWidths column_widths(const std::vector<RawCourse>& courses, const std::vec
 // `rises[c - 1]` for RawCourse c; `course_of` per loop.
 std::vector<double> layer_rises(const std::vector<Loop>& loops, const std::vector<int>& course_of,
                                 const std::vector<RawCourse>& courses);
+
+// A loop made in the needle column of the stitch worked just before it (a split
+// bind-off's loop, over the stitch bound off, or the chain's last loop) shares the column,
+// half of it each: the course's widths set per column (Course::widths: its live stitches
+// and those it bound off), where the needles set none. `shared`: the ops (indexes, in
+// order) of such loops, each after the op it shares with.
+void share_columns(Course& course, const std::vector<std::size_t>& shared);
 
 }  // namespace knitc::knitout

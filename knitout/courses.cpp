@@ -429,23 +429,8 @@ Imported import_program(const Program& program, const Profile& profile) {
       for (std::size_t ci = 1; ci < courses.size(); ++ci) pattern.courses[ci - 1].rise = rises[ci - 1];
     }
   }
-  // A loop made in the column of the stitch just worked shares it: each half of it
-  // (Course::widths, one per column: the live stitches and those bound off). Where the
-  // needles set the course's widths already, theirs are kept.
-  for (std::size_t ci = 1; ci < courses.size(); ++ci) {
-    Course& course = pattern.courses[ci - 1];
-    if (shared_column[ci].empty() || !course.widths.empty()) continue;
-    std::vector<std::size_t>::const_iterator shared = shared_column[ci].begin();
-    for (std::size_t i = 0; i < course.ops.size(); ++i) {
-      const int slots = course.ops[i].stitch == bo ? 1 : stitch(course.ops[i].stitch).produces;
-      const bool half = shared != shared_column[ci].end() && *shared == i;
-      if (half) {
-        course.widths.back() = 0.5;
-        ++shared;
-      }
-      course.widths.insert(course.widths.end(), static_cast<std::size_t>(slots), half ? 0.5 : 1.0);
-    }
-  }
+  // A loop made in the column of the stitch just worked shares it (columns.hpp).
+  for (std::size_t ci = 1; ci < courses.size(); ++ci) share_columns(pattern.courses[ci - 1], shared_column[ci]);
   // A last course that binds off every stitch but the one the chain ends on is the
   // pattern's bind-off: the knitter pulls the yarn through that last loop.
   if (!pattern.courses.empty()) {
