@@ -77,7 +77,9 @@ TEST(Spelling, PrintedFormsWorkTheSameStitchesAsThePlainOnes) {
 
 TEST(Spelling, NormalisingTwiceIsNormalisingOnce) {
   for (const char* t : {"K 2 tog., p.s.s.o., Y O", "sl 1 purlwise with yarn in front", "k2. P2. rep. from *, ending k1",
-                        "\u2018k\u2019 \u2013 \u00d7 3\u2026", "...k2..", "k2 . . p2", "(k2, p2.) x2.", "1. 2. 3."}) {
+                        "\u2018k\u2019 \u2013 \u00d7 3\u2026", "...k2..", "k2 . . p2", "(k2, p2.) x2.", "1. 2. 3.",
+                        // The written fuzzer's (2026-12-07): the bracket's "rep" dropped makes "rep *-*" a phrase.
+                        "*k1; rep *-*rep(from * to l!st 4 sts, k2"}) {
     SCOPED_TRACE(t);
     const std::string once = normalise(t);
     EXPECT_EQ(normalise(once), once);
@@ -86,6 +88,7 @@ TEST(Spelling, NormalisingTwiceIsNormalisingOnce) {
   EXPECT_EQ(normalise("\u2018k2\u2019 \u201ck2\u201d \u2014 \u00d7"), "'k2' \"k2\"   x");  // a dash between words parts nothing
   EXPECT_EQ(normalise("K2. P2."), "K2, P2");
   EXPECT_EQ(normalise("rep. from *"), "rep from *");
+  EXPECT_EQ(normalise("k1; rep *-*rep(k2)"), "k1; rep from *(k2)");
   EXPECT_EQ(normalise("sl 1 purlwise with yarn in front"), "sl 1 pwise wyif");
   // Yarn ids keep their case: "k2 B" is yarn B.
   EXPECT_EQ(normalise("k2 B, k2 MC"), "k2 B, k2 MC");

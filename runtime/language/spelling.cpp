@@ -286,8 +286,24 @@ std::string without_colons(std::string s) {
 
 }  // namespace
 
-std::string normalise(std::string_view text) {
+namespace {
+std::string normalise_once(std::string_view text) {
   return without_repeat_before_bracket(replace_phrases(without_colons(without_dots(typography_as_ascii(text)))));
+}
+}  // namespace
+
+std::string normalise(std::string_view text) {
+  // One pass can make what another step reads ("rep *-*rep(k1": the second "rep" goes
+  // before its bracket, and "rep *-*" is then a phrase): passes until nothing changes, so
+  // that normalise(normalise(t)) == normalise(t). A second pass is the most any text
+  // has needed; the cap only guards against a cycle no rule is known to make.
+  std::string s = normalise_once(text);
+  for (int pass = 0; pass < 16; ++pass) {
+    std::string next = normalise_once(s);
+    if (next == s) break;
+    s = std::move(next);
+  }
+  return s;
 }
 
 std::span<const AmbiguousSpelling> ambiguous_spellings() { return ambiguous_table; }
