@@ -6,6 +6,82 @@
 
 namespace knitc::knitout {
 
+namespace {
+
+// Where a course is a pass along one bed and a pass back along the other with one yarn
+// (made by knits and tucks only, the second through none of the first's loops): the
+// index in `made` where the second pass starts, else 0.
+std::size_t second_pass(const RawCourse& c, const std::vector<Loop>& loops) {
+  if (c.made.size() < 2) return 0;
+  const Loop& head = loops[static_cast<std::size_t>(c.made.front())];
+  const bool side = front(head.needle.bed);
+  std::size_t turn = 0;
+  for (std::size_t i = 0; i < c.made.size(); ++i) {
+    const Loop& loop = loops[static_cast<std::size_t>(c.made[i])];
+    if (loop.carriers != head.carriers || (loop.made_by != Opcode::knit && loop.made_by != Opcode::tuck)) return 0;
+    const bool first = turn == 0 && front(loop.needle.bed) == side && loop.direction == head.direction;
+    if (turn == 0 && !first) turn = i;
+    if (turn != 0 && (front(loop.needle.bed) == side || loop.direction != -head.direction)) return 0;
+  }
+  if (turn == 0 || head.direction == 0) return 0;
+  for (std::size_t i = turn; i < c.made.size(); ++i)
+    for (int q : loops[static_cast<std::size_t>(c.made[i])].parents)
+      if (std::find(c.made.begin(), c.made.begin() + static_cast<std::ptrdiff_t>(turn), q) != c.made.begin() + static_cast<std::ptrdiff_t>(turn))
+        return 0;
+  return turn;
+}
+
+// Flat work whose course is a pass along the front bed and back along the back (a Milano
+// rib's jersey passes between its rib rows, a spacer's layers) is two courses, one per
+// bed, as a flat row's turn is: read as one, as a tube's round is, its yarn would run the
+// width and back within a course of a flat sheet. The first course's needles as they
+// stood at its end: the second's loops replaced by the loops they were knitted through.
+void split_passes(Cut& cut, const Machine& machine) {
+  const std::vector<Loop>& loops = machine.loops();
+  std::vector<RawCourse> out;
+  out.reserve(cut.courses.size());
+  std::vector<char> second(loops.size(), 0);
+  for (RawCourse& c : cut.courses) {
+    const std::size_t turn = second_pass(c, loops);
+    if (turn == 0) {
+      out.push_back(std::move(c));
+      continue;
+    }
+    RawCourse a, b;
+    a.first_operation = c.first_operation;
+    b.first_operation = loops[static_cast<std::size_t>(c.made[turn])].operation;
+    a.racking = b.racking = c.racking;
+    a.made.assign(c.made.begin(), c.made.begin() + static_cast<std::ptrdiff_t>(turn));
+    b.made.assign(c.made.begin() + static_cast<std::ptrdiff_t>(turn), c.made.end());
+    // The runs are in the order the carrier went: the first pass's up to its turn.
+    const int way = loops[static_cast<std::size_t>(c.made.front())].direction;
+    bool turned = false;
+    for (const Run& r : c.went) {
+      turned = turned || r.direction == -way;
+      (turned ? b.went : a.went).push_back(r);
+    }
+    for (int l : b.made) second[static_cast<std::size_t>(l)] = 1;
+    for (const Position& p : c.positions) {
+      Position q{p.needle, p.x, {}};
+      for (int l : p.pile) {
+        if (!second[static_cast<std::size_t>(l)]) q.pile.push_back(l);
+        else if (loops[static_cast<std::size_t>(l)].made_by == Opcode::knit)
+          q.pile.insert(q.pile.end(), loops[static_cast<std::size_t>(l)].parents.begin(), loops[static_cast<std::size_t>(l)].parents.end());
+      }
+      if (!q.pile.empty()) a.positions.push_back(std::move(q));
+    }
+    for (int l : b.made) second[static_cast<std::size_t>(l)] = 0;
+    b.positions = std::move(c.positions);
+    out.push_back(std::move(a));
+    out.push_back(std::move(b));
+  }
+  cut.courses = std::move(out);
+  for (std::size_t i = 0; i < cut.courses.size(); ++i)
+    for (int l : cut.courses[i].made) cut.course_of[static_cast<std::size_t>(l)] = static_cast<int>(i);
+}
+
+}  // namespace
+
 Cut cut_courses(const Program& program, Machine& machine) {
   Cut cut;
   std::vector<RawCourse>& courses = cut.courses;
@@ -207,10 +283,15 @@ Cut cut_courses(const Program& program, Machine& machine) {
   }
 
   // Flat or round: a tube's rounds knit the front layer one way and the back layer the
-  // other, on both beds.
+  // other, on both beds, each round turning the way the last one did. A Milano rib's
+  // passes between its rib rows go round so too, but turn the other way each time (three
+  // passes a row): only a round that turns as its carrier's last did (or its first)
+  // counts.
   int rounds = 0, sheets = 0;
+  std::map<int, int> turning;  // per carrier: the way its last round knitted the front layer
   for (const RawCourse& c : courses) {
-    bool f = false, b = false, tube = false;
+    bool f = false, b = false;
+    int tube = -1, way = 0;  // the carrier that went round, and its way along the front layer
     std::map<int, std::pair<int, int>> by_carrier;  // carrier -> (front layer's direction, back layer's)
     for (int l : c.made) {
       const Loop& loop = loops[static_cast<std::size_t>(l)];
@@ -218,11 +299,20 @@ Cut cut_courses(const Program& program, Machine& machine) {
       (front(loop.needle.bed) ? f : b) = true;
       (layer[static_cast<std::size_t>(l)] != 0 ? d.first : d.second) = loop.direction;
     }
-    for (const auto& [carrier, d] : by_carrier) tube = tube || (d.first != 0 && d.second != 0 && d.first != d.second);
+    for (const auto& [carrier, d] : by_carrier)
+      if (tube < 0 && d.first != 0 && d.second != 0 && d.first != d.second) tube = carrier, way = d.first;
     // Weighed by loops: a bind-off's steps (split on one bed, knit on the other) are not rounds.
-    if (f && b) (tube ? rounds : sheets) += static_cast<int>(c.made.size());
+    if (!f || !b) continue;
+    if (tube < 0) {
+      sheets += static_cast<int>(c.made.size());
+      continue;
+    }
+    const auto last = turning.find(tube);
+    if (last == turning.end() || last->second == way) rounds += static_cast<int>(c.made.size());
+    turning[tube] = way;
   }
   cut.round = rounds > sheets;
+  if (!cut.round) split_passes(cut, machine);
 
   return cut;
 }

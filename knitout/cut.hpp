@@ -70,7 +70,8 @@ inline double across(Needle n, double racking) { return front(n.bed) ? n.index :
 // twice, where a carrier turns back onto loops along the bed it came, or where it reaches
 // a stitch it already passed; a bind-off's steps are one course, and so are a tube's two
 // passes when transfers between them cut it in two (each a layer, the second not
-// knitted through the first).
+// knitted through the first). In flat work a pass along one bed and back along the
+// other (a Milano rib's) is two courses.
 struct Cut {
   std::vector<RawCourse> courses;
   std::vector<int> course_of;  // per loop: its course

@@ -79,6 +79,25 @@ std::string half_milano(int n, int rows) {
   return k + "rack 0\nouthook 1\n";
 }
 
+// Milano rib on `n` needles a bed at racking +0.25: rows of full-needle rib, each
+// followed by a pass back along the front bed and one on along the back, the yarn
+// turning onto the other bed between them as a tube's does.
+std::string milano(int n, int rows) {
+  std::string k = ";!knitout-2\n;;Carriers: 1\ninhook 1\n" + cast_on('f', n, 1) + "rack 0.25\n";
+  for (int r = 0; r < rows; ++r) {
+    const bool left = r % 2 == 0;
+    const std::string there = left ? "- " : "+ ", back = left ? "+ " : "- ";
+    for (int j = 1; j <= n; ++j) {
+      const int i = left ? n + 1 - j : j;
+      const std::string b = "knit " + there + "b" + std::to_string(i) + " 1\n", f = "knit " + there + "f" + std::to_string(i) + " 1\n";
+      k += left ? b + f : f + b;  // the back needle lies just right of the front one
+    }
+    for (int j = 1; j <= n; ++j) k += "knit " + back + "f" + std::to_string(left ? j : n + 1 - j) + " 1\n";
+    for (int j = 1; j <= n; ++j) k += "knit " + there + "b" + std::to_string(left ? n + 1 - j : j) + " 1\n";
+  }
+  return k + "rack 0\nouthook 1\n";
+}
+
 double middle_x(const layout::Loop& l) { return 0.5 * (l.data_points.front().x + l.data_points.back().x); }
 
 }  // namespace
@@ -213,6 +232,51 @@ TEST(KnitoutLayers, HalfMilanosRibCoursesKeepTheirStitchesSideBySide) {
   // All six but the first, whose first back loop, knitted on an empty needle, was cast on.
   EXPECT_EQ(side_by_side, 5);
   // Relaxed, no yarn passes through another (a whole position a loop: 13 of 2,074).
+  const Fabric f = compile(rib, test::centrelines(true));
+  ASSERT_TRUE(f.crossings_checked);
+  EXPECT_EQ(measure::passed_through(f.crossings), 0u);
+}
+
+TEST(KnitoutLayers, AMilanoRibsPassesAreACourseOnEachBedStackedOverTheirRibRows) {
+  // Between its rib rows the yarn goes along the front bed and back along the back, as a
+  // tube's round does; in a flat fabric those are two courses, one a layer, or the
+  // course's yarn would run the width and back (and no repeat could hold it).
+  const Pattern rib = import_text(milano(24, 12), "milano.k").pattern;
+  EXPECT_EQ(rib.knitting, Knitting::flat);
+  const knit_graph::Graph graph = knit_graph::build(rib);
+  std::map<int, std::pair<int, int>> beds;  // per course: its knit and purl loops
+  for (const auto& k : graph.loops)
+    if (!k.held) {
+      const std::string name(stitch(k.stitch).name);
+      if (name == "k") ++beds[k.course].first;
+      if (name == "p") ++beds[k.course].second;
+    }
+  int front = 0, back = 0, both = 0;
+  for (const auto& [course, n] : beds) {
+    if (course == 0) continue;
+    front += n.first == 24 && n.second == 0;
+    back += n.first == 0 && n.second == 24;
+    both += n.first == 24 && n.second == 24;
+  }
+  // The first rib row's back loops, made on empty needles, are yarn overs: its 24 front
+  // loops count with the 12 front passes.
+  EXPECT_EQ(front, 12 + 1);
+  EXPECT_EQ(back, 12);
+  EXPECT_EQ(both, 11);
+  // Each loop over the one it was pulled through, whichever course that lies in: the
+  // back pass, pulled through the rib row two courses down, lines up over it, not
+  // centred over the front pass (each such course off by a column, the fabric leaned).
+  const layout::Layout laid = layout::lay_out(rib);
+  int over = 0;
+  for (std::size_t i = 0; i < graph.loops.size(); ++i) {
+    const auto& k = graph.loops[i];
+    if (k.held || k.parents.size() != 1 || k.course < 2) continue;
+    const layout::Loop& parent = laid.loops[static_cast<std::size_t>(k.parents.front())];
+    EXPECT_LE(std::abs(middle_x(laid.loops[i]) - middle_x(parent)), 0.5 * laid.loop_width) << "loop " << i << ", course " << k.course;
+    ++over;
+  }
+  EXPECT_GT(over, 24 * 30);
+  // Relaxed, no yarn passes through another.
   const Fabric f = compile(rib, test::centrelines(true));
   ASSERT_TRUE(f.crossings_checked);
   EXPECT_EQ(measure::passed_through(f.crossings), 0u);

@@ -4,6 +4,7 @@
 #include "layout/courses.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -105,15 +106,22 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
   if (std::any_of(out.layers.begin(), out.layers.end(), [](const auto& l) { return !l.empty(); })) out.layer_depth = T;
   // Per course, the plain loops (knit or purl through one loop of the course below) and
   // their parents' columns: what lines a course up over the one below.
-  std::vector<std::vector<std::pair<int, int>>> plain(static_cast<std::size_t>(out.courses));  // (column, parent's column)
+  // A course with none (the second bed's pass of a two-layer fabric, its loops pulled
+  // through the rib row two courses down) lines up over the parents it has, wherever
+  // they lie.
+  std::vector<std::vector<std::array<int, 3>>> plain(static_cast<std::size_t>(out.courses));  // (column, parent's course, its column)
+  std::vector<std::vector<std::array<int, 3>>> older(static_cast<std::size_t>(out.courses));
   for (const knit_graph::Loop& k : graph.loops) {
     if (k.course == 0 || k.parents.size() != 1 || k.held || stitch(k.stitch).family == StitchFamily::cable) continue;
     const knit_graph::Loop& parent = graph.loops[static_cast<std::size_t>(k.parents.front())];
-    if (parent.course == k.course - 1) plain[k.course].push_back({k.slot, parent.slot});
+    (parent.course == k.course - 1 ? plain : older)[k.course].push_back({k.slot, parent.course, parent.slot});
   }
   if (bind_off)
     for (std::size_t s = 0; s < graph.live.size(); ++s)
-      if (graph.live[s].size() == 1) plain.back().push_back({static_cast<int>(s), graph.loops[graph.live[s].front()].slot});
+      if (graph.live[s].size() == 1) {
+        const knit_graph::Loop& parent = graph.loops[graph.live[s].front()];
+        plain.back().push_back({static_cast<int>(s), parent.course, parent.slot});
+      }
   for (int c = 0; c < out.courses; ++c) {
     const double width = std::accumulate(widths[c].begin(), widths[c].end(), 0.0);
     const Columns columns = columns_of(widths[c], W);
@@ -125,10 +133,11 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
     if (pattern.knitting == Knitting::flat && c > 0) {
       const double below = out.origin_x[c - 1], below_width = out.slot_x[c - 1].back() - below;
       origin = below + 0.5 * (below_width - width);
-      if (!plain[c].empty()) {
+      const auto& over = plain[c].empty() ? older[c] : plain[c];
+      if (!over.empty()) {
         std::vector<double> offsets;
-        for (const auto& [column, parent] : plain[c])
-          offsets.push_back(centre_x(out, c - 1, parent) - columns.centres[static_cast<std::size_t>(column)]);
+        for (const auto& [column, course, parent] : over)
+          offsets.push_back(centre_x(out, course, parent) - columns.centres[static_cast<std::size_t>(column)]);
         std::sort(offsets.begin(), offsets.end());
         const std::size_t n = offsets.size();
         origin = n % 2 ? offsets[n / 2] : 0.5 * (offsets[n / 2 - 1] + offsets[n / 2]);
