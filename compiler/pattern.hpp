@@ -62,6 +62,9 @@ struct Yarn {
 struct Op {
   StitchId stitch = 0;
   int yarn = 0;  // index into Pattern::yarns
+  // Plating: a second yarn knitted into the same loops with it, lying on their technical
+  // face (a machine's stitch made with two carriers), or -1. Index into Pattern::yarns.
+  int plated = -1;
   bool operator==(const Op&) const = default;
 };
 

@@ -240,6 +240,13 @@ Imported import_program(const Program& program, const Profile& profile) {
     auto yarn_for = [&](int loop) { return yarn_of[static_cast<std::size_t>(loops[static_cast<std::size_t>(loop)].carriers.front())]; };
     std::size_t next = 0;
     auto emit = [&](StitchId s, int yarn) { course.ops.push_back({s, yarn}); };
+    // A loop made by two carriers is plated: the second's yarn knitted into it with the
+    // first's (a third and more are drawn as the first: cut.cpp warns).
+    auto emit_made = [&](StitchId s, int loop) {
+      const std::vector<int>& carriers = loops[static_cast<std::size_t>(loop)].carriers;
+      const int second = carriers.size() > 1 ? yarn_of[static_cast<std::size_t>(carriers[1])] : -1;
+      course.ops.push_back({s, yarn_for(loop), second == yarn_for(loop) ? -1 : second});
+    };
     struct Unsupported {
       std::string why;
     };
@@ -262,7 +269,7 @@ Imported import_program(const Program& program, const Profile& profile) {
         // A split's old loops beside its new loop: an increase, both loops through the stitch.
         if (j + 1 < pos.size() && info[j + 1].kind == Kind::made && info[j + 1].stitches == f.stitches &&
             f.stitches.size() == 1 && static_cast<std::size_t>(f.stitches.front()) == next) {
-          emit(purl_side ? pfb : kfb, yarn_for(info[j + 1].loop));
+          emit_made(purl_side ? pfb : kfb, info[j + 1].loop);
           next = static_cast<std::size_t>(f.stitches.back()) + 1;
           j += 2;
         } else {
@@ -282,7 +289,8 @@ Imported import_program(const Program& program, const Profile& profile) {
           const bool knitted_there = before.consumes == 1 && before.produces == 1 && j > 0 && std::abs(pos[j - 1].x - pos[j].x) < 0.5;
           if (bound_there || knitted_there) shared_column[ci].push_back(course.ops.size());
         }
-        emit(yo, f.loop >= 0 ? yarn_for(f.loop) : course_yarn);
+        if (f.loop >= 0) emit_made(yo, f.loop);
+        else emit(yo, course_yarn);
         ++j;
         continue;
       }
@@ -291,7 +299,7 @@ Imported import_program(const Program& program, const Profile& profile) {
         const bool split_next = j + 1 < pos.size() && info[j + 1].kind == Kind::partner && info[j + 1].stitches == f.stitches;
         StitchId s = none;
         if (f.kind == Kind::made && split_next && n == 1) {
-          emit(purl_side ? pfb : kfb, yarn_for(f.loop));
+          emit_made(purl_side ? pfb : kfb, f.loop);
           ++j;
         } else if (f.kind == Kind::made) {
           const bool left_top = f.top == f.stitches.front(), right_top = f.top == f.stitches.back();
@@ -301,11 +309,11 @@ Imported import_program(const Program& program, const Profile& profile) {
           else if (n == 5) s = stitch_id(purl_side ? "p5tog" : "k5tog");
           else unsupported(std::to_string(n) + " loops are knitted together on " + name(pos[j].needle) + "; knitc draws decreases of 2, 3 or 5",
                     "decrease in steps of at most three loops");
-          emit(s, yarn_for(f.loop));
+          emit_made(s, f.loop);
         } else if (f.kind == Kind::tucked) {
           if (n != 1) unsupported("a tuck on " + name(pos[j].needle) + " over " + std::to_string(n) + " stacked loops; knitc draws a tuck on one stitch",
                            "knit the stacked loops together before tucking on them");
-          emit(tuck, yarn_for(f.loop));
+          emit_made(tuck, f.loop);
         } else {
           if (n != 1) unsupported("loops of " + std::to_string(n) + " stitches stacked on " + name(pos[j].needle) + " and left unknitted",
                            "knit them together in the next course");
@@ -365,7 +373,7 @@ Imported import_program(const Program& program, const Profile& profile) {
         unsupported("the loops knitted on " + name(pos[j].needle) + " and beside it were moved past each other in a way knitc cannot yet draw (" + seen + ")",
              "knitc draws crosses of two groups of up to four stitches each, swapped by racked transfers");
       }
-      emit(s, yarn_for(info[j].loop));
+      emit_made(s, info[j].loop);
       next += width;
       j += width;
     }

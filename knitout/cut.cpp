@@ -161,7 +161,7 @@ Cut cut_courses(const Program& program, Machine& machine) {
       RawCourse& c = courses.back();
       course_of[before] = static_cast<int>(courses.size()) - 1;
       c.made.push_back(static_cast<int>(before));
-      if (op.carriers.size() > 1 && plated++ == 0) plated_line = op.line;
+      if (op.carriers.size() > 2 && plated++ == 0) plated_line = op.line;
       (front(op.needle.bed) ? cut.front_loops : cut.back_loops) += 1;
     }
     // Where the carriers went. A miss that turns back waits for the next stitch: it
@@ -189,7 +189,7 @@ Cut cut_courses(const Program& program, Machine& machine) {
     throw KnitoutError(program.file + ":1: the program makes no loops; a knitout program knits, tucks or splits with a carrier", 1);
   if (plated > 0)
     cut.warnings.push_back(program.file + ":" + std::to_string(plated_line) + ": warning: " + std::to_string(plated) +
-                           " loops are plated (made with several carriers); each is drawn in its first carrier's yarn");
+                           " loops are made with three or more carriers; each is drawn plated with its first two carriers' yarns, the first on the back");
 
   // A bind-off's steps, each a course of a loop or two knitted through the last step's
   // loop moved onto an older stitch, are one course: every loop of the chain but the last

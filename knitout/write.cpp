@@ -277,6 +277,15 @@ Exported export_pattern(const Pattern& pattern, const Profile& profile) {
     for (int y : yarns) {
       w.bring_in(y);
       const std::string c = w.carrier(y);
+      // Plating: a loop knitted with a second yarn names both carriers, the first yarn's
+      // first (docs/knitout.md, "Plating").
+      std::vector<int> plating;
+      for (int i : order) {
+        const Op& op = *steps[static_cast<std::size_t>(i)].op;
+        if (op.yarn == y && op.plated >= 0 && std::find(plating.begin(), plating.end(), op.plated) == plating.end())
+          plating.push_back(op.plated);
+      }
+      for (int q : plating) w.bring_in(q);
       // The loops in working order; a tube's back bed goes rightwards, its front leftwards.
       std::vector<std::pair<int, const Step*>> work;  // (next index, step)
       for (int i : order) {
@@ -305,7 +314,8 @@ Exported export_pattern(const Pattern& pattern, const Profile& profile) {
         }
         if (s.unreached) continue;
         w.use(p);
-        w.put(std::string(s.family == StitchFamily::tuck ? "tuck " : "knit ") + direction(p) + " " + needle_name(p) + " " + c);
+        w.put(std::string(s.family == StitchFamily::tuck ? "tuck " : "knit ") + direction(p) + " " + needle_name(p) + " " + c +
+              (st->op->plated >= 0 ? " " + w.carrier(st->op->plated) : ""));
         slipped.clear();
         any = true;
         last = p;
@@ -315,6 +325,7 @@ Exported export_pattern(const Pattern& pattern, const Profile& profile) {
         if (beyond.needle >= 0) w.put("miss " + std::string(direction(last)) + " " + needle_name(beyond) + " " + c);
       }
       w.release(y);
+      for (int q : plating) w.release(q);
     }
     w.live = std::move(next);
   }

@@ -452,9 +452,15 @@ TEST(KnitoutImport, RealProgramsSayTheirStructures) {
   EXPECT_GT(crosses, 10);
   // A tube knitted on both beds: in the round.
   EXPECT_EQ(import_file(real("mil-tube.k")).pattern.knitting, Knitting::round);
-  // Plating is said; a bind-off's steps are bo.
+  // Plating: each of its 7,500 stitches knitted with carriers 3 and 4 (counted from its
+  // text: "knit D N 3 4") is plated, carrier 3's yarn first; a bind-off's steps are bo.
   const Imported plating = import_file(real("mil-plating.k"));
-  EXPECT_TRUE(std::any_of(plating.warnings.begin(), plating.warnings.end(), [](const std::string& w) { return w.find("plated") != std::string::npos; }));
+  int plated = 0;
+  for (const Course& c : plating.pattern.courses)
+    for (const Op& op : c.ops)
+      if (op.plated >= 0) plated += plating.pattern.yarns[static_cast<std::size_t>(op.yarn)].id == "3" &&
+                                   plating.pattern.yarns[static_cast<std::size_t>(op.plated)].id == "4";
+  EXPECT_EQ(plated, 7500);
   EXPECT_GT(tally(plating.pattern)["bo"], 40);
   // The decreasing triangle narrows from 22 to 2.
   const Pattern dec = import_file(real("ks-dec_triangle.k")).pattern;

@@ -155,6 +155,20 @@ Graph build(const Pattern& pattern) {
         children.push_back(0);
         return static_cast<int>(g.loops.size()) - 1;
       };
+      // A plated stitch's second loop, beside `first` (just made): the stitch is then both.
+      auto plate = [&](int first) {
+        std::vector<int> stitch_loops{first};
+        if (op.plated < 0) return stitch_loops;
+        Loop l = g.loops[static_cast<std::size_t>(first)];
+        l.position = position++;
+        l.yarn = op.plated;
+        l.plating = true;
+        for (int p : l.parents) ++children[static_cast<std::size_t>(p)];
+        g.loops.push_back(std::move(l));
+        children.push_back(0);
+        stitch_loops.push_back(static_cast<int>(g.loops.size()) - 1);
+        return stitch_loops;
+      };
       if (s.wraps > 0) {  // each stitch knitted, then the yarn wound round them all
         const int first = static_cast<int>(g.loops.size());
         for (int k = 0; k < s.consumes; ++k) {
@@ -203,7 +217,7 @@ Graph build(const Pattern& pattern) {
         case StitchFamily::tuck:
           for (int k = 0; k < s.consumes; ++k) {
             std::vector<int> held = live[at + k];
-            held.push_back(new_loop({}, true));
+            for (int t : plate(new_loop({}, true))) held.push_back(t);
             next.push_back(std::move(held));
             next_loose.push_back(loose_over(at + k, 1));
           }
@@ -216,8 +230,7 @@ Graph build(const Pattern& pattern) {
           break;
         case StitchFamily::cable:
           for (int j = 0; j < s.produces; ++j) {
-            const int made = new_loop(live[at + cable_source(s, j)], false);
-            next.push_back({made});
+            next.push_back(plate(new_loop(live[at + cable_source(s, j)], false)));
             next_loose.push_back(loose_over(at + static_cast<std::size_t>(cable_source(s, j)), 1));
           }
           break;
@@ -229,7 +242,7 @@ Graph build(const Pattern& pattern) {
           for (int k = 0; k < s.produces; ++k) {
             // An increase works every new loop through the old one; a yarn over has none.
             const int made = new_loop(k == 0 || s.family == StitchFamily::increase ? parents : std::vector<int>{}, false);
-            next.push_back({made});
+            next.push_back(plate(made));
             if (s.catches) over = catch_floats(g, std::move(over), made, !purled(s), number);
             next_loose.push_back(over);
           }

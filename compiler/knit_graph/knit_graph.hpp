@@ -52,6 +52,10 @@ struct Loop {
   bool held = false;         // a tuck loop: caught on the needle, knitted off with the next loop
   bool unravelled = false;   // let off by a drop: no parents, no children, a rung across its wale
   bool bound = false;        // bound off within its course: passed over the next, off the needle
+  // Plating: the second yarn's loop of a stitch knitted with two (Op::plated), made just
+  // after the first yarn's, through the same parents, in the same column; both are the
+  // stitch the next course pulls its loop through.
+  bool plating = false;
 };
 
 // A stretch of yarn that passes stitches by without making a loop: a slipped stitch's

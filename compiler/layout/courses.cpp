@@ -112,7 +112,11 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
   std::vector<std::vector<std::array<int, 3>>> plain(static_cast<std::size_t>(out.courses));  // (column, parent's course, its column)
   std::vector<std::vector<std::array<int, 3>>> older(static_cast<std::size_t>(out.courses));
   for (const knit_graph::Loop& k : graph.loops) {
-    if (k.course == 0 || k.parents.size() != 1 || k.held || stitch(k.stitch).family == StitchFamily::cable) continue;
+    if (k.course == 0 || k.held || k.plating || stitch(k.stitch).family == StitchFamily::cable) continue;
+    // Through one stitch: one loop, or a plated stitch's two (the first yarn's and its plating).
+    const auto through = std::count_if(k.parents.begin(), k.parents.end(),
+                                       [&](int q) { return !graph.loops[static_cast<std::size_t>(q)].plating; });
+    if (through != 1 || k.parents.empty() || graph.loops[static_cast<std::size_t>(k.parents.front())].plating) continue;
     const knit_graph::Loop& parent = graph.loops[static_cast<std::size_t>(k.parents.front())];
     (parent.course == k.course - 1 ? plain : older)[k.course].push_back({k.slot, parent.course, parent.slot});
   }

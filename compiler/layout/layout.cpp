@@ -98,6 +98,7 @@ void take_loops(Layout& out, const knit_graph::Graph& graph) {
     l.stitch = k.stitch;
     l.yarn = k.yarn;
     l.order = k.order;
+    l.plating = k.plating;
     const StitchDef& s = stitch(k.stitch);
     if (k.unravelled) l.shape = Template::rung;
     else if (k.bound) l.shape = Template::bind_off;
@@ -166,6 +167,12 @@ std::vector<char> tucks_purled_off(const Layout& out, const std::vector<std::vec
   return purl_column;
 }
 
+// How far a plating yarn's loop lies above its stitch's first yarn's, in the plating
+// yarn's diameters. Relaxed, a plated jersey, a plated 1x1 rib and plated stripes (20 to
+// 30 needles) passed no yarn through another from 0.5 to 0.7; at 0, 58 of 7,276 crossings
+// of the jersey; at 0.3, 8; at 1.0, 28.
+constexpr double plating_rise = 0.6;
+
 // Every loop at its needle position by its stitch's template.
 void place_templates(Layout& out, const Pattern& pattern, const std::vector<char>& purl_column) {
   const auto plain = plain_loop(pattern.gauge);
@@ -173,9 +180,15 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
   for (std::size_t index = 0; index < out.loops.size(); ++index) {
     Loop& l = out.loops[index];
     const Span span = span_of(out, l.course, l.wale);
-    const double depth = layered(out, l.course) ? out.layers[l.course][l.wale] * out.layer_depth : 0.0;
-    const glm::dvec3 origin(span.left, course_y(out, l.course), depth);
     const double d = pattern.yarns[l.yarn].diameter;
+    double depth = layered(out, l.course) ? out.layers[l.course][l.wale] * out.layer_depth : 0.0;
+    // A plating yarn lies against the loop before it (its stitch's first yarn), on that
+    // loop's technical face: in front of a knit, behind a purl.
+    if (l.plating) depth += (l.shape == Template::purl ? -0.5 : 0.5) * (d + pattern.yarns[out.loops[index - 1].yarn].diameter);
+    // and a little above it: its loop a copy of the first's moved straight forward would
+    // lie on the first's line seen from the face, where which crosses which is undecided.
+    const double up = l.plating ? plating_rise * d : 0.0;
+    const glm::dvec3 origin(span.left, course_y(out, l.course) + up, depth);
     const double w = width_of(out, l);
     for (int i = 0; i < loop_points; ++i) {
       glm::dvec3 p = plain[i];
@@ -212,7 +225,7 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
       l.data_points[i] = origin + p;
     }
     // Exactly the next loop's P0, not origin + W rounded differently.
-    l.data_points[loop_points - 1] = glm::dvec3(span.right, course_y(out, l.course), depth);
+    l.data_points[loop_points - 1] = glm::dvec3(span.right, course_y(out, l.course) + up, depth);
   }
 }
 

@@ -46,6 +46,9 @@ struct Loop {
   Template shape = Template::knit;
   // Worked against its course's direction: a bobble's turned rows.
   bool against = false;
+  // The second yarn of a plated stitch (knit_graph::Loop::plating), drawn on the first's
+  // technical face.
+  bool plating = false;
   // mm, course-local flat coordinates, P0 at the left (face view) whichever way it is worked
   std::array<glm::dvec3, loop_points> data_points;
 };
