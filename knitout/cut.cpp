@@ -31,11 +31,12 @@ std::size_t second_pass(const RawCourse& c, const std::vector<Loop>& loops) {
   return turn;
 }
 
-// Flat work whose course is a pass along the front bed and back along the back (a Milano
-// rib's jersey passes between its rib rows, a spacer's layers) is two courses, one per
-// bed, as a flat row's turn is: read as one, as a tube's round is, its yarn would run the
-// width and back within a course of a flat sheet. The first course's needles as they
-// stood at its end: the second's loops replaced by the loops they were knitted through.
+// Flat work whose course is a pass along one bed and back along the other (a Milano
+// rib's jersey passes between its rib rows, a few rounds of tube in a flat program) is
+// two courses, one per bed, as a flat row's turn is: read as one, as a tube's round is,
+// its yarn would run the width and back within a course of a flat sheet. The first
+// course's needles as they stood at its end: the second's loops replaced by the loops
+// they were knitted through.
 void split_passes(Cut& cut, const Machine& machine) {
   const std::vector<Loop>& loops = machine.loops();
   std::vector<RawCourse> out;
