@@ -164,10 +164,10 @@ int course_verb(lua_State* L) {
   if (!lua_isnil(L, -1)) text = "(" + text + ") x" + std::to_string(whole_number(L, lua_gettop(L), "course{}.rep", static_cast<long long>(field("course", "rep").lo),
                                                                                    static_cast<long long>(field("course", "rep").hi)));
   lua_pop(L, 1);
-  const int saved_yarn = s.work.yarn();
+  const int saved_yarn = s.work.yarn(), saved_plated = s.work.plated();
   if (const auto yarn = string_field(L, 1, "course{}", "yarn")) s.work.change_yarn(yarn_index(L, *yarn));
   work_written(L, parse_written(L, text), text, caller_location(L));
-  s.work.change_yarn(saved_yarn);
+  s.work.change_yarn(saved_yarn, saved_plated);
   return 0;
 }
 
@@ -359,7 +359,14 @@ int stitch_verb(lua_State* L) {
 int yarn_verb(lua_State* L) {
   need_pattern(L, "yarn");
   if (lua_type(L, 1) != LUA_TSTRING) fail(L, "yarn takes a declared yarn's name, e.g. yarn \"B\"");
-  script_of(L).work.change_yarn(yarn_index(L, text_of(L, 1)));
+  const int yarn = yarn_index(L, text_of(L, 1));
+  int plated = -1;
+  if (!lua_isnoneornil(L, 2)) {
+    if (lua_type(L, 2) != LUA_TSTRING) fail(L, "yarn's second yarn, knitted with the first, must be a declared yarn's name, e.g. yarn(\"A\", \"B\")");
+    plated = yarn_index(L, text_of(L, 2));
+    if (plated == yarn) fail(L, "yarn(\"" + text_of(L, 1) + "\", \"" + text_of(L, 2) + "\") plates a yarn with itself; name two different yarns, or one");
+  }
+  script_of(L).work.change_yarn(yarn, plated);
   return 0;
 }
 
@@ -431,7 +438,11 @@ constexpr Verb verbs[] = {
      "stitch(\"C4Bp\", \"sl 2 to cn, hold in back, k2, p2 from cn\")"},
     {"legend", legend_verb, "legend { [symbol] = stitch | { stitch, yarn = id }, ... }",
      "Adds or changes chart symbols for the charts that follow.", "legend { [\"#\"] = { \"k\", yarn = \"B\" } }"},
-    {"yarn", yarn_verb, "yarn(id)", "Changes to another declared yarn for the rows that follow: stripes.", "yarn \"B\""},
+    {"yarn", yarn_verb, "yarn(id [, plated])",
+     "Changes to another declared yarn for the rows that follow: stripes. With a second yarn, both are knitted into every loop "
+     "the first makes, the second on the loops' technical face (plating: a plated jersey shows the second yarn on its face and "
+     "the first on its back).",
+     "yarn \"B\"\nyarn(\"A\", \"B\")"},
     {"live", live_verb, "live()", "The number of live stitches on the needle now.", "local n = live()"},
     {"knitting", knitting_verb, "knitting()", "\"flat\" or \"round\", as pattern{} declared: for library functions.",
      "if knitting() == \"flat\" then rows(2, \"k\") end"},

@@ -25,7 +25,7 @@ std::string graph_text(const Pattern& p) {
     s += std::to_string(l.course) + " " + std::to_string(l.slot) + " " + std::string(stitch(l.stitch).name) + " " +
          p.yarns[static_cast<std::size_t>(l.yarn)].color + " " + std::to_string(l.order) + " [";
     for (int q : l.parents) s += std::to_string(q) + ",";
-    s += "]" + std::string(l.held ? " held" : "") + (l.unravelled ? " unravelled" : "") + (l.bound ? " bound" : "") + "\n";
+    s += "]" + std::string(l.held ? " held" : "") + (l.unravelled ? " unravelled" : "") + (l.bound ? " bound" : "") + (l.plating ? " plating" : "") + "\n";
   }
   for (const auto& f : g.floats)
     s += "float " + std::to_string(f.course) + " " + std::to_string(f.first) + "-" + std::to_string(f.last) + (f.in_front ? " front" : "") + "\n";

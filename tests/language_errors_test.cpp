@@ -278,6 +278,15 @@ const BadScript catalogue[] = {
     {"count_run_in_too_large",
      "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 } }, knitting = \"flat\" }\ncast_on(4)\nrow \"k2, p2000000\"\n",
      "t.lua:3: row 1 \"k2, p2000000\": the count in 'p2000000' must be from 1 to 100000"},
+    {"plated_with_itself",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 }, B = { diameter = 1 } } }\ncast_on(4)\nyarn(\"A\", \"A\")\n",
+     "t.lua:3: yarn(\"A\", \"A\") plates a yarn with itself; name two different yarns, or one"},
+    {"plated_not_a_name",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 }, B = { diameter = 1 } } }\ncast_on(4)\nyarn(\"A\", 2)\n",
+     "t.lua:3: yarn's second yarn, knitted with the first, must be a declared yarn's name, e.g. yarn(\"A\", \"B\")"},
+    {"plated_undeclared",
+     "pattern { gauge = { stitches = 20, rows = 28 }, yarns = { A = { diameter = 1 }, B = { diameter = 1 } } }\ncast_on(4)\nyarn(\"A\", \"C\")\n",
+     "t.lua:3: yarn 'C' was never declared; declare it in pattern{ yarns = ... } (declared: A, B)"},
 };
 
 std::string expected(const BadScript& script) {

@@ -69,6 +69,20 @@ TEST(Written, YarnChangesMakeStripes) {
   EXPECT_EQ(p.cast_on_yarn, 0);
 }
 
+TEST(Written, ASecondYarnIsPlatedIntoTheFirstsStitches) {
+  // yarn("A", "B"): A's stitches take B with them until the yarn changes again; a
+  // course{} in another yarn is not plated, and the plating goes on after it; a chart
+  // cell in another yarn is not plated either.
+  const Pattern p = run("cast_on(4)\nyarn(\"A\", \"B\")\nrow \"k\"\ncourse { k, k, k, k, yarn = \"B\" }\nrow \"k\"\n"
+                        "legend { [\"#\"] = { \"k\", yarn = \"B\" } }\nchart [[\n  # . # .\n]]\nyarn \"A\"\nrow \"k\"\n");
+  ASSERT_EQ(p.courses.size(), 5u);
+  for (const Op& op : p.courses[0].ops) EXPECT_EQ(op.plated, 1);
+  for (const Op& op : p.courses[1].ops) EXPECT_EQ(op.plated, -1);
+  for (const Op& op : p.courses[2].ops) EXPECT_EQ(op.plated, 1);
+  for (const Op& op : p.courses[3].ops) EXPECT_EQ(op.plated, op.yarn == 0 ? 1 : -1);
+  for (const Op& op : p.courses[4].ops) EXPECT_EQ(op.plated, -1);
+}
+
 // The same fabrics said three ways compile to identical Patterns.
 TEST(ThreeWays, TwoByTwoRib) {
   const Pattern written = run("cast_on(12)\nrows(4, \"k2, p2\")\n");

@@ -224,6 +224,10 @@ std::optional<std::string> Work::add(std::vector<Op> ops, const SourceLocation& 
   if (auto e = no_live_stitches()) return e;
   Course c;
   c.ops = std::move(ops);
+  // Plating: the working yarn's stitches take the plating yarn with them.
+  if (plated_ >= 0)
+    for (Op& op : c.ops)
+      if (op.yarn == yarn_ && op.plated < 0) op.plated = plated_;
   c.side = side_of(next_row());
   c.where = where;
   if (c.ops.empty()) return "row " + std::to_string(next_row()) + " has no stitches";
@@ -262,7 +266,7 @@ std::size_t Work::cost(std::size_t stitches, const SourceLocation& where) const 
 }
 
 Work::Mark Work::mark() const {
-  return {pattern_.courses.size(), live_, yarn_, pattern_.cast_on, pattern_.cast_on_yarn, cast_on_line_, bind_off_line_,
+  return {pattern_.courses.size(), live_, yarn_, plated_, pattern_.cast_on, pattern_.cast_on_yarn, cast_on_line_, bind_off_line_,
           loops_, pattern_.bound_off, wrong_side_first_, purl_faced_, markers_};
 }
 
@@ -270,6 +274,7 @@ void Work::restore(const Mark& m) {
   pattern_.courses.resize(std::min(pattern_.courses.size(), m.courses));
   live_ = m.live;
   yarn_ = m.yarn;
+  plated_ = m.plated;
   pattern_.cast_on = m.cast_on;
   pattern_.cast_on_yarn = m.cast_on_yarn;
   cast_on_line_ = m.cast_on_line;

@@ -46,7 +46,10 @@ class Work {
 
   // Each returns what is wrong, or nothing when done; a call that fails changes nothing.
   std::optional<std::string> cast_on(int stitches, int yarn, int line);
-  void change_yarn(int yarn) { yarn_ = yarn; }
+  // `plated`: a second yarn knitted into every loop the yarn makes, on the loops'
+  // technical face (plating), or -1.
+  void change_yarn(int yarn, int plated = -1) { yarn_ = yarn, plated_ = plated; }
+  int plated() const { return plated_; }
   void set_selvedge(Selvedge s) { selvedge_ = s; }
   Selvedge selvedge() const { return selvedge_; }
   // Row 1 is worked from the wrong side (knitspeak's "Row 1 (WS):"); before any row.
@@ -70,7 +73,7 @@ class Work {
   // undoes everything since, and the marks taken since are spent.
   struct Mark {
     std::size_t courses = 0;
-    int live = 0, yarn = 0, cast_on = 0, cast_on_yarn = 0, cast_on_line = 0, bind_off_line = 0;
+    int live = 0, yarn = 0, plated = -1, cast_on = 0, cast_on_yarn = 0, cast_on_line = 0, bind_off_line = 0;
     long long loops = 0;
     bool bound_off = false, wrong_side_first = false;
     std::vector<bool> purl_faced;
@@ -84,6 +87,7 @@ class Work {
   Limits limits_;
   int live_ = 0;
   int yarn_ = 0;
+  int plated_ = -1;
   long long loops_ = 0;
   int cast_on_line_ = 0, bind_off_line_ = 0;
   bool wrong_side_first_ = false;
