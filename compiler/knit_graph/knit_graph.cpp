@@ -159,14 +159,10 @@ Graph build(const Pattern& pattern) {
       auto plate = [&](int first) {
         std::vector<int> stitch_loops{first};
         if (op.plated < 0) return stitch_loops;
-        Loop l = g.loops[static_cast<std::size_t>(first)];
-        l.position = position++;
-        l.yarn = op.plated;
-        l.plating = true;
-        for (int p : l.parents) ++children[static_cast<std::size_t>(p)];
-        g.loops.push_back(std::move(l));
-        children.push_back(0);
-        stitch_loops.push_back(static_cast<int>(g.loops.size()) - 1);
+        const int second = new_loop(g.loops[static_cast<std::size_t>(first)].parents, g.loops[static_cast<std::size_t>(first)].held);
+        g.loops[static_cast<std::size_t>(second)].yarn = op.plated;
+        g.loops[static_cast<std::size_t>(second)].plating = true;
+        stitch_loops.push_back(second);
         return stitch_loops;
       };
       if (s.wraps > 0) {  // each stitch knitted, then the yarn wound round them all

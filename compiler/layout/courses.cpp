@@ -116,7 +116,7 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
     // Through one stitch: one loop, or a plated stitch's two (the first yarn's and its plating).
     const auto through = std::count_if(k.parents.begin(), k.parents.end(),
                                        [&](int q) { return !graph.loops[static_cast<std::size_t>(q)].plating; });
-    if (through != 1 || k.parents.empty() || graph.loops[static_cast<std::size_t>(k.parents.front())].plating) continue;
+    if (through != 1 || graph.loops[static_cast<std::size_t>(k.parents.front())].plating) continue;
     const knit_graph::Loop& parent = graph.loops[static_cast<std::size_t>(k.parents.front())];
     (parent.course == k.course - 1 ? plain : older)[k.course].push_back({k.slot, parent.course, parent.slot});
   }

@@ -125,8 +125,9 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   if (layout.knitting == Knitting::round && layout.wales < least_round_wales) return std::nullopt;
   // Tucks: tiled, the held loops and the tuck loops in them lose crossings (half cardigan
   // at its own gauge: 118 lone crossings lost, docs/relaxation.md), so they relax whole.
+  // Plating: two loops at each needle position, the grid's one a cell.
   for (const auto& loop : layout.loops)
-    if (loop.shape == layout::Template::tuck) return std::nullopt;
+    if (loop.shape == layout::Template::tuck || loop.plating) return std::nullopt;
   // Caught floats are lifted across courses to the loop that catches them, and clusters
   // narrow their needle positions, so neither lies on the lattice: relaxed whole.
   for (const auto& f : layout.floats)
@@ -135,9 +136,6 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   if (!layout.bobbles.empty()) return std::nullopt;  // a bobble's rows share one needle position
   // Two layers: positions over each other, courses at their layers' heights.
   if (!layout.heights.empty() || layout.layer_depth > 0.0) return std::nullopt;
-  // Plating: two loops at each needle position, the grid's one a cell.
-  for (const auto& loop : layout.loops)
-    if (loop.plating) return std::nullopt;
   for (const auto& loop : layout.loops)  // bound off within a row: the columns change
     if (loop.shape == layout::Template::bind_off && loop.course + 1 < layout.courses) return std::nullopt;
   // Every needle position one lattice step wide (the loop width; relax() passes a machine's
