@@ -186,6 +186,7 @@ Cut cut_courses(const Program& program, Machine& machine) {
     }
   }
   close();
+  cut.warnings.insert(cut.warnings.end(), machine.warnings().begin(), machine.warnings().end());
   if (courses.empty())
     throw KnitoutError(program.file + ":1: the program makes no loops; a knitout program knits, tucks or splits with a carrier", 1);
   if (plated > 0)

@@ -121,6 +121,16 @@ void Machine::run(std::size_t index) {
   const Operation& op = program_.operations[index];
   switch (op.op) {
     case Opcode::in: case Opcode::inhook:
+      // A machine has one yarn inserting hook: it holds one carrier set until released.
+      if (op.op == Opcode::inhook)
+        for (std::size_t c = 0; c < hooked_.size(); ++c)
+          if (hooked_[c]) {
+            warnings_.push_back(located(program_, op, "warning: inhook while carrier " + program_.carriers[c] +
+                                                          " is still on the yarn inserting hook (from line " + std::to_string(hooked_line_) + ")",
+                                        "a machine has one hook: release it first with 'releasehook " + program_.carriers[c] + "'"));
+            break;
+          }
+      if (op.op == Opcode::inhook) hooked_line_ = op.line;
       for (int c : op.carriers) {
         if (in_[static_cast<std::size_t>(c)])
           fail(op, "carrier " + program_.carriers[static_cast<std::size_t>(c)] + " is in already", "take it out first, or leave out this line");
@@ -136,6 +146,7 @@ void Machine::run(std::size_t index) {
         if (!in_[static_cast<std::size_t>(c)])
           fail(op, "carrier " + program_.carriers[static_cast<std::size_t>(c)] + " is not in", "only a carrier brought in can go out");
         in_[static_cast<std::size_t>(c)] = 0;
+        hooked_[static_cast<std::size_t>(c)] = 0;  // out with it, hook and all
       }
       return;
     case Opcode::rack:

@@ -55,6 +55,8 @@ class Machine {
   // When each loop last moved (the operation's index), or -1: a cable's crossing order.
   const std::vector<int>& moved_at() const { return moved_at_; }
   const Profile& profile() const { return profile_; }
+  // "file:line: warning: ..." for what a machine would not do but knitc can still draw.
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
  private:
   static long long key(Needle n) { return (static_cast<long long>(n.index) << 2) | static_cast<long long>(n.bed); }
@@ -74,6 +76,8 @@ class Machine {
   double racking_ = 0.0;
   std::vector<char> in_;            // per carrier: brought in
   std::vector<char> hooked_;        // per carrier: held by the inserting hook
+  int hooked_line_ = 0;             // the line of the inhook that holds them
+  std::vector<std::string> warnings_;
   int lowest_ = 0, highest_ = -1;   // the needles used so far, for the bed's width
 };
 

@@ -193,6 +193,24 @@ TEST(KnitoutMachine, RefusesWhatTheMachineCannotDoWithTheProgramsSource) {
   EXPECT_NE(error_of(split + "tuck + b1 1\nsplit + f1 b1 1\n").find("t.k:13: needle b1 holds 9 loops"), std::string::npos);
 }
 
+// One yarn inserting hook: a second inhook before the first carrier is released (or taken
+// out) is a warning at its line; knitc still draws what the program knits.
+TEST(KnitoutMachine, WarnsOfAnInhookWhileTheHookHoldsAnotherCarrier) {
+  const std::string head = ";!knitout-2\n;;Carriers: 1 2\ninhook 1\nknit + f1 1\n";
+  const auto hook_warnings = [](const std::string& text) {
+    std::vector<std::string> out;
+    for (const std::string& w : import_text(text, "t.k").warnings)
+      if (w.find("inserting hook") != std::string::npos) out.push_back(w);
+    return out;
+  };
+  const auto held = hook_warnings(head + "inhook 2 ;!source: pocket.py:3\nknit + f2 2\n");
+  ASSERT_EQ(held.size(), 1u);
+  EXPECT_EQ(held[0], "t.k:5: warning: inhook while carrier 1 is still on the yarn inserting hook (from line 3) (;!source: pocket.py:3); "
+                     "a machine has one hook: release it first with 'releasehook 1'");
+  EXPECT_TRUE(hook_warnings(head + "releasehook 1\ninhook 2\nknit + f2 2\n").empty());
+  EXPECT_TRUE(hook_warnings(head + "outhook 1\ninhook 2\nknit + f2 2\n").empty());
+}
+
 TEST(KnitoutMachine, KeepsEachNeedlesPileAndMovesItWhole) {
   const Program p = parse(";!knitout-2\n;;Carriers: 1\ninhook 1\ntuck + f1 1\ntuck + f2 1\nxfer f1 b1\nrack 1\nxfer b1 f2\n"
                           "tuck + f2 1\nknit + f2 1\n", "t.k");
