@@ -57,6 +57,12 @@ constexpr std::array<double, loop_points> twist_depth = {0.0, 1.0, 1.0, 1.0, 0.6
 // do not meet on one spot (still inside P1, 0.25 W in).
 constexpr double crossed_sinker_gap = 0.15;
 
+// A yarn over in lace has no parent to wrap its legs round: the strand lies over the
+// needle, and the hole under it is the eyelet. Its loop is drawn with its legs this much
+// of their length (the head where a plain loop's is, the feet on the course's line) and
+// half as deep.
+constexpr double eyelet_legs = 0.35;
+
 // A ladder's rung rises this far (of C) at its middle.
 constexpr double rung_bow = 0.25;
 
@@ -176,7 +182,12 @@ constexpr double plating_rise = 0.6;
 // Every loop at its needle position by its stitch's template.
 void place_templates(Layout& out, const Pattern& pattern, const std::vector<char>& purl_column) {
   const auto plain = plain_loop(pattern.gauge);
-  const double W = out.loop_width, C = out.course_spacing;
+  const double W = out.loop_width, C = out.course_spacing, H = pattern.gauge.loop_height;
+  const StitchId yo = stitch_id("yo");
+  // Lace: a course that decreases beside its yarn overs (their eyelets keep the count).
+  std::vector<char> lace(static_cast<std::size_t>(out.courses), 0);
+  for (const Loop& l : out.loops)
+    if (stitch(l.stitch).family == StitchFamily::decrease) lace[static_cast<std::size_t>(l.course)] = 1;
   for (std::size_t index = 0; index < out.loops.size(); ++index) {
     Loop& l = out.loops[index];
     const Span span = span_of(out, l.course, l.wale);
@@ -190,9 +201,14 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
     const double up = l.plating ? plating_rise * d : 0.0;
     const glm::dvec3 origin(span.left, course_y(out, l.course) + up, depth);
     const double w = width_of(out, l);
+    const bool eyelet = l.stitch == yo && lace[static_cast<std::size_t>(l.course)] && (l.shape == Template::knit || l.shape == Template::purl);
     for (int i = 0; i < loop_points; ++i) {
       glm::dvec3 p = plain[i];
       if (w != W) p.x *= w / W;
+      if (eyelet && i > 0 && i < loop_points - 1) {
+        p.y = H - (H - p.y) * eyelet_legs;
+        p.z *= 0.5;
+      }
       switch (l.shape) {
         case Template::knit: break;
         case Template::purl: p.z = -p.z; break;
