@@ -309,9 +309,11 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
       double dz = 0.0;
       if (s.family == StitchFamily::decrease && parents[i].size() > 1)
         dz = (k == top_parent(s, parents[i].size()) ? 0.5 : -0.5) * d;
-      // More than three gathered (a nupp's five): the heads only halfway to the meet, and
-      // the ones below the top alternating in depth, or they would lie on one line.
-      const bool many = s.family == StitchFamily::decrease && parents[i].size() > 3;
+      // Three or more gathered (a double decrease, a nupp's five): the heads only halfway
+      // to the meet, and the ones below the top alternating in depth, or they would lie on
+      // one line (a k3tog's two lower heads on each other, parted either way by the
+      // relaxation: 16 yarns through another in horseshoe lace, tests/lace_test.cpp).
+      const bool many = s.family == StitchFamily::decrease && parents[i].size() > 2;
       if (many && k != top_parent(s, parents[i].size())) dz = (k % 2 ? -0.5 : -1.1) * d;
       const double up = out.heights.empty() ? (child.course - parent.course - 1) * C
                                             : out.heights[child.course] - out.heights[parent.course] - C;
