@@ -24,7 +24,7 @@ std::string plated(int n, int rows, Bed bed_of, const std::string& carriers = "1
   std::string k = ";!knitout-2\n;;Carriers: 1 2 3\ninhook 1\n";
   for (int i = n; i >= 1; --i) k += "tuck - " + std::string(bed_of(i)) + std::to_string(i) + " 1\n";
   for (int i = 1; i <= n; ++i) k += "knit + " + std::string(bed_of(i)) + std::to_string(i) + " 1\n";
-  k += "inhook 2\ninhook 3\n";
+  k += "releasehook 1\nin 2\nin 3\n";  // the yarn inserting hook released before the others come in
   for (int r = 0; r < rows; ++r)
     for (int j = 1; j <= n; ++j) {
       const int i = r % 2 == 0 ? n + 1 - j : j;
