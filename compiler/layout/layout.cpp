@@ -194,11 +194,9 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
   // plain loop's legs: the decreases' leaning legs take its column's edges, and drawn
   // short there more yarns passed through (CMU's image lace tests: 55 and 81 of 14,000
   // crossings with the plain legs; 423 and 267 short).
-  std::vector<char> lace(static_cast<std::size_t>(out.courses), 0);
-  std::vector<std::vector<char>> decrease_at(static_cast<std::size_t>(out.courses));
+  std::vector<std::vector<char>> decrease_at(static_cast<std::size_t>(out.courses));  // empty: the course has none
   for (const Loop& l : out.loops) {
     if (stitch(l.stitch).family != StitchFamily::decrease) continue;
-    lace[static_cast<std::size_t>(l.course)] = 1;
     auto& at = decrease_at[static_cast<std::size_t>(l.course)];
     if (at.size() <= static_cast<std::size_t>(l.wale)) at.resize(static_cast<std::size_t>(l.wale) + 1, 0);
     at[static_cast<std::size_t>(l.wale)] = 1;
@@ -220,7 +218,8 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
     const double up = l.plating ? plating_rise * d : 0.0;
     const glm::dvec3 origin(span.left, course_y(out, l.course) + up, depth);
     const double w = width_of(out, l);
-    const bool eyelet = l.stitch == yo && lace[static_cast<std::size_t>(l.course)] && (l.shape == Template::knit || l.shape == Template::purl) &&
+    const bool eyelet = l.stitch == yo && !decrease_at[static_cast<std::size_t>(l.course)].empty() &&
+                        (l.shape == Template::knit || l.shape == Template::purl) &&
                         !(decreases(l.course, l.wale - 1) && decreases(l.course, l.wale + 1));
     for (int i = 0; i < loop_points; ++i) {
       glm::dvec3 p = plain[i];
@@ -326,20 +325,19 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
     for (std::size_t k = 0; k < parents[i].size(); ++k) {
       Loop& parent = out.loops[parents[i][k]];
       const double px = centre_x(out, parent.course, parent.wale);
-      double dz = 0.0;
-      // The heads under the top one a little lower too (as a tuck's is), or two gathered
-      // to one x lie on one line seen from the face, where which crosses which is undecided.
-      double dy = 0.0;
-      if (s.family == StitchFamily::decrease && parents[i].size() > 1) {
-        dz = (k == top_parent(s, parents[i].size()) ? 0.5 : -0.5) * d;
-        if (k != top_parent(s, parents[i].size())) dy = -gathered_drop * d;
-      }
+      // A decrease's top head in front, the others behind it and a little lower (as a
+      // tuck's is), or two gathered to one x lie on one line seen from the face, where
+      // which crosses which is undecided.
+      const bool gathered = s.family == StitchFamily::decrease && parents[i].size() > 1;
+      const bool under = gathered && k != top_parent(s, parents[i].size());
+      double dz = gathered ? (under ? -0.5 : 0.5) * d : 0.0;
+      const double dy = under ? -gathered_drop * d : 0.0;
       // Three or more gathered (a double decrease, a nupp's five): the heads only halfway
       // to the meet, and the ones below the top alternating in depth, or they would lie on
       // one line (a k3tog's two lower heads on each other, parted either way by the
       // relaxation: 16 yarns through another in horseshoe lace, tests/lace_test.cpp).
-      const bool many = s.family == StitchFamily::decrease && parents[i].size() > 2;
-      if (many && k != top_parent(s, parents[i].size())) dz = (k % 2 ? -0.5 : -1.1) * d;
+      const bool many = gathered && parents[i].size() > 2;
+      if (many && under) dz = (k % 2 ? -0.5 : -1.1) * d;
       const double up = out.heights.empty() ? (child.course - parent.course - 1) * C
                                             : out.heights[child.course] - out.heights[parent.course] - C;
       const glm::dvec3 shift(many ? 0.5 * (meet - px) : meet - px, up + dy, dz);
