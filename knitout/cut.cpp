@@ -291,7 +291,37 @@ Cut cut_courses(const Program& program, Machine& machine) {
   // counts.
   int rounds = 0, sheets = 0;
   std::map<int, int> turning;  // per carrier: the way its last round knitted the front layer
-  for (const RawCourse& c : courses) {
+  // A pass along one bed whose carrier's next pass comes back along the same bed is a flat
+  // row (an i-cord cast-on's fabric, knitted on the front bed only after its cord's rounds);
+  // a tube's passes, where not one round, go to the other bed.
+  auto one_bed = [&](const RawCourse& c, int& carrier, int& direction, bool& on_front) {
+    if (c.made.empty()) return false;
+    const Loop& head = loops[static_cast<std::size_t>(c.made.front())];
+    carrier = head.carriers.front(), direction = head.direction, on_front = front(head.needle.bed);
+    for (int l : c.made) {
+      const Loop& loop = loops[static_cast<std::size_t>(l)];
+      if (loop.carriers.front() != carrier || loop.direction != direction || front(loop.needle.bed) != on_front) return false;
+    }
+    return direction != 0;
+  };
+  std::vector<std::size_t> next_pass(courses.size(), courses.size());  // the next course its first loop's carrier made
+  {
+    std::map<int, std::size_t> later;
+    for (std::size_t at = courses.size(); at-- > 0;) {
+      if (courses[at].made.empty()) continue;
+      const int carrier = loops[static_cast<std::size_t>(courses[at].made.front())].carriers.front();
+      if (const auto it = later.find(carrier); it != later.end()) next_pass[at] = it->second;
+      later[carrier] = at;
+    }
+  }
+  auto turns_on_its_bed = [&](std::size_t at) {
+    int carrier = 0, direction = 0, c2 = 0, d2 = 0;
+    bool on_front = false, f2 = false;
+    return one_bed(courses[at], carrier, direction, on_front) && next_pass[at] < courses.size() &&
+           one_bed(courses[next_pass[at]], c2, d2, f2) && d2 == -direction && f2 == on_front;
+  };
+  for (std::size_t at = 0; at < courses.size(); ++at) {
+    const RawCourse& c = courses[at];
     bool f = false, b = false;
     int tube = -1, way = 0;  // the carrier that went round, and its way along the front layer
     std::map<int, std::pair<int, int>> by_carrier;  // carrier -> (front layer's direction, back layer's)
@@ -304,7 +334,10 @@ Cut cut_courses(const Program& program, Machine& machine) {
     for (const auto& [carrier, d] : by_carrier)
       if (tube < 0 && d.first != 0 && d.second != 0 && d.first != d.second) tube = carrier, way = d.first;
     // Weighed by loops: a bind-off's steps (split on one bed, knit on the other) are not rounds.
-    if (!f || !b) continue;
+    if (!f || !b) {
+      if (turns_on_its_bed(at)) sheets += static_cast<int>(c.made.size());
+      continue;
+    }
     if (tube < 0) {
       sheets += static_cast<int>(c.made.size());
       continue;
