@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 namespace knitc::knitout {
 
@@ -244,27 +245,35 @@ Cut cut_courses(const Program& program, Machine& machine) {
     const Loop& loop = loops[l];
     layer[l] = loop.parents.empty() ? front(loop.needle.bed) : layer[static_cast<std::size_t>(loop.parents.back())];
   }
+  // A course that is one pass: one carrier, one direction, and every loop on one side, as
+  // `side_of` (a loop's index) tells it: its layer, or its bed.
+  struct Pass {
+    int carrier, direction;
+    bool side;
+  };
+  auto pass_of = [&](const RawCourse& c, auto&& side_of) -> std::optional<Pass> {
+    if (c.made.empty()) return std::nullopt;
+    const Loop& head = loops[static_cast<std::size_t>(c.made.front())];
+    const Pass pass{head.carriers.front(), head.direction, side_of(c.made.front())};
+    if (pass.direction == 0) return std::nullopt;
+    for (int l : c.made) {
+      const Loop& loop = loops[static_cast<std::size_t>(l)];
+      if (loop.carriers.front() != pass.carrier || loop.direction != pass.direction || side_of(l) != pass.side) return std::nullopt;
+    }
+    return pass;
+  };
+  auto layer_of = [&](int l) { return layer[static_cast<std::size_t>(l)] != 0; };
+  auto bed_of = [&](int l) { return front(loops[static_cast<std::size_t>(l)].needle.bed); };
   // A tube's two passes cut apart by transfers between them (a half-gauge tube parks one
   // layer's loops, or moves its purls, between its passes): one carrier each, one direction
   // each, the two opposite and of the two layers, the second knitting through none of the
   // first's loops. They are one round.
   {
-    auto one_pass = [&](const RawCourse& c, int& carrier, int& direction, bool& side) {
-      if (c.made.empty()) return false;
-      const Loop& head = loops[static_cast<std::size_t>(c.made.front())];
-      carrier = head.carriers.front(), direction = head.direction, side = layer[static_cast<std::size_t>(c.made.front())] != 0;
-      for (int l : c.made) {
-        const Loop& loop = loops[static_cast<std::size_t>(l)];
-        if (loop.carriers.front() != carrier || loop.direction != direction || (layer[static_cast<std::size_t>(l)] != 0) != side) return false;
-      }
-      return direction != 0;
-    };
     std::vector<RawCourse> merged;
     for (std::size_t c = 0; c < courses.size(); ++c) {
-      int ca = 0, da = 0, cb = 0, db = 0;
-      bool sa = false, sb = false;
-      bool pair = c + 1 < courses.size() && one_pass(courses[c], ca, da, sa) && one_pass(courses[c + 1], cb, db, sb) && ca == cb &&
-                  da == -db && sa != sb;
+      const auto a = pass_of(courses[c], layer_of);
+      const auto b = a && c + 1 < courses.size() ? pass_of(courses[c + 1], layer_of) : std::nullopt;
+      bool pair = b && a->carrier == b->carrier && a->direction == -b->direction && a->side != b->side;
       for (std::size_t i = 0; pair && i < courses[c + 1].made.size(); ++i)
         for (int q : loops[static_cast<std::size_t>(courses[c + 1].made[i])].parents)
           pair = pair && course_of[static_cast<std::size_t>(q)] != static_cast<int>(c);
@@ -294,16 +303,6 @@ Cut cut_courses(const Program& program, Machine& machine) {
   // A pass along one bed whose carrier's next pass comes back along the same bed is a flat
   // row (an i-cord cast-on's fabric, knitted on the front bed only after its cord's rounds);
   // a tube's passes, where not one round, go to the other bed.
-  auto one_bed = [&](const RawCourse& c, int& carrier, int& direction, bool& on_front) {
-    if (c.made.empty()) return false;
-    const Loop& head = loops[static_cast<std::size_t>(c.made.front())];
-    carrier = head.carriers.front(), direction = head.direction, on_front = front(head.needle.bed);
-    for (int l : c.made) {
-      const Loop& loop = loops[static_cast<std::size_t>(l)];
-      if (loop.carriers.front() != carrier || loop.direction != direction || front(loop.needle.bed) != on_front) return false;
-    }
-    return direction != 0;
-  };
   std::vector<std::size_t> next_pass(courses.size(), courses.size());  // the next course its first loop's carrier made
   {
     std::map<int, std::size_t> later;
@@ -315,10 +314,9 @@ Cut cut_courses(const Program& program, Machine& machine) {
     }
   }
   auto turns_on_its_bed = [&](std::size_t at) {
-    int carrier = 0, direction = 0, c2 = 0, d2 = 0;
-    bool on_front = false, f2 = false;
-    return one_bed(courses[at], carrier, direction, on_front) && next_pass[at] < courses.size() &&
-           one_bed(courses[next_pass[at]], c2, d2, f2) && d2 == -direction && f2 == on_front;
+    const auto pass = pass_of(courses[at], bed_of);
+    const auto next = pass && next_pass[at] < courses.size() ? pass_of(courses[next_pass[at]], bed_of) : std::nullopt;
+    return next && next->direction == -pass->direction && next->side == pass->side;
   };
   for (std::size_t at = 0; at < courses.size(); ++at) {
     const RawCourse& c = courses[at];

@@ -4,11 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include <glm/vec3.hpp>
 #include <map>
 #include <string>
 #include <string_view>
+
+#include <glm/vec3.hpp>
 
 #include "compile.hpp"
 #include "knit_graph/knit_graph.hpp"
