@@ -26,7 +26,7 @@ Density density(Quality quality) {
 
 ViewDensity density_for_view(const layout::Layout& layout, int width, int height) {
   const double across = std::max(static_cast<double>(layout.wales), 1.0) * layout.loop_width;
-  const double up = std::max(static_cast<double>(layout.courses) * layout.course_spacing, layout.loop_width);
+  const double up = std::max(layout::laid_height(layout), layout.loop_width);
   return density_for_loop_pixels(std::min(width / across, height / up) * layout.loop_width);
 }
 

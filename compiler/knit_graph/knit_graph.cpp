@@ -1,6 +1,7 @@
 #include "knit_graph/knit_graph.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -103,6 +104,9 @@ Graph build(const Pattern& pattern) {
   std::vector<std::vector<int>> loose(live.size());
   g.needle.push_back(pattern.cast_on);
   g.columns.push_back(pattern.cast_on);
+  g.stands_on.emplace_back();
+  std::vector<int> live_columns(live.size());  // each live stitch's column in the course below
+  std::iota(live_columns.begin(), live_columns.end(), 0);
   std::vector<int> yarn_order(pattern.yarns.size(), 0);
   for (int y = 0; y < static_cast<int>(pattern.yarns.size()); ++y) {
     if (y == pattern.cast_on_yarn) yarn_order[y] = pattern.cast_on;
@@ -139,8 +143,12 @@ Graph build(const Pattern& pattern) {
     std::size_t at = 0;  // next live stitch, face order
     int position = 0;
     int bound = 0;  // stitches bound off so far in the course: columns without a needle
+    std::vector<Column>& stands_on = g.stands_on.emplace_back();
+    std::vector<int> next_columns;
     for (const Op& op : course.ops) {
       const StitchDef& s = stitch(op.stitch);
+      const std::size_t op_at = at, next_before = next.size();
+      const int bound_before = bound;
       auto new_loop = [&](std::vector<int> parents, bool held) {
         Loop l;
         l.course = number;
@@ -172,10 +180,7 @@ Graph build(const Pattern& pattern) {
           next_loose.push_back(loose_over(at + static_cast<std::size_t>(k), 1));
         }
         g.wraps.push_back({number, first, static_cast<int>(g.loops.size()) - 1, op.yarn, s.wraps});
-        at += static_cast<std::size_t>(s.consumes);
-        continue;
-      }
-      if (s.bobble_loops > 0) {  // a row of loops out of one stitch, rows on them, gathered
+      } else if (s.bobble_loops > 0) {  // a row of loops out of one stitch, rows on them, gathered
         Bobble b{number, static_cast<int>(g.loops.size()), s.bobble_loops, s.bobble_rows};
         for (int r = 0; r < b.rows; ++r)
           for (int k = 0; k < b.loops; ++k)
@@ -185,67 +190,85 @@ Graph build(const Pattern& pattern) {
         next.push_back({new_loop(std::move(last), false)});
         next_loose.push_back(loose_over(at, 1));
         g.bobbles.push_back(b);
-        at += 1;
-        continue;
-      }
-      switch (s.family) {
-        case StitchFamily::slip: {
-          if (s.unreached) {  // held: left as it was, no yarn across it
-            next.push_back(live[at]);
-            next_loose.push_back(loose_over(at, 1));
+      } else {
+        switch (s.family) {
+          case StitchFamily::slip: {
+            if (s.unreached) {  // held: left as it was, no yarn across it
+              next.push_back(live[at]);
+              next_loose.push_back(loose_over(at, 1));
+              break;
+            }
+            // Stitches slipped one after another ("sl3 wyif") leave one float across them all.
+            const bool in_front = op.stitch == stitch_id("sl wyif");
+            const int first = static_cast<int>(next.size()) + bound;
+            if (!g.floats.empty() && g.floats.back().course == number && g.floats.back().yarn == op.yarn &&
+                g.floats.back().in_front == in_front && g.floats.back().last + 1 == first)
+              g.floats.back().last = first + s.consumes - 1;
+            else
+              g.floats.push_back({number, first, first + s.consumes - 1, op.yarn, in_front});
+            for (int k = 0; k < s.consumes; ++k) {
+              next.push_back(live[at + k]);
+              next_loose.push_back(loose_over(at + k, 1));
+              next_loose.back().push_back(static_cast<int>(g.floats.size()) - 1);
+            }
             break;
           }
-          // Stitches slipped one after another ("sl3 wyif") leave one float across them all.
-          const bool in_front = op.stitch == stitch_id("sl wyif");
-          const int first = static_cast<int>(next.size()) + bound;
-          if (!g.floats.empty() && g.floats.back().course == number && g.floats.back().yarn == op.yarn &&
-              g.floats.back().in_front == in_front && g.floats.back().last + 1 == first)
-            g.floats.back().last = first + s.consumes - 1;
-          else
-            g.floats.push_back({number, first, first + s.consumes - 1, op.yarn, in_front});
-          for (int k = 0; k < s.consumes; ++k) {
-            next.push_back(live[at + k]);
-            next_loose.push_back(loose_over(at + k, 1));
-            next_loose.back().push_back(static_cast<int>(g.floats.size()) - 1);
+          case StitchFamily::tuck:
+            for (int k = 0; k < s.consumes; ++k) {
+              std::vector<int> held = live[at + k];
+              for (int t : plate(new_loop({}, true))) held.push_back(t);
+              next.push_back(std::move(held));
+              next_loose.push_back(loose_over(at + k, 1));
+            }
+            break;
+          case StitchFamily::no_stitch: break;
+          case StitchFamily::drop: unravel(g, children, live[at], number); break;
+          case StitchFamily::bind_off:
+            g.loops[static_cast<std::size_t>(new_loop(live[at], false))].bound = true;
+            ++bound;
+            break;
+          case StitchFamily::cable:
+            for (int j = 0; j < s.produces; ++j) {
+              next.push_back(plate(new_loop(live[at + cable_source(s, j)], false)));
+              next_loose.push_back(loose_over(at + static_cast<std::size_t>(cable_source(s, j)), 1));
+            }
+            break;
+          default: {  // knit, purl, yarn over, decreases: one new loop through all they take
+            std::vector<int> parents;
+            for (int k = 0; k < s.consumes; ++k) parents.insert(parents.end(), live[at + k].begin(), live[at + k].end());
+            if (s.below) parents = drop_into_stitch_below(g, children, std::move(parents));
+            std::vector<int> over = loose_over(at, s.consumes);
+            for (int k = 0; k < s.produces; ++k) {
+              // An increase works every new loop through the old one; a yarn over has none.
+              const int made = new_loop(k == 0 || s.family == StitchFamily::increase ? parents : std::vector<int>{}, false);
+              next.push_back(plate(made));
+              if (s.catches) over = catch_floats(g, std::move(over), made, !purled(s), number);
+              next_loose.push_back(over);
+            }
+            break;
           }
-          break;
-        }
-        case StitchFamily::tuck:
-          for (int k = 0; k < s.consumes; ++k) {
-            std::vector<int> held = live[at + k];
-            for (int t : plate(new_loop({}, true))) held.push_back(t);
-            next.push_back(std::move(held));
-            next_loose.push_back(loose_over(at + k, 1));
-          }
-          break;
-        case StitchFamily::no_stitch: break;
-        case StitchFamily::drop: unravel(g, children, live[at], number); break;
-        case StitchFamily::bind_off:
-          g.loops[static_cast<std::size_t>(new_loop(live[at], false))].bound = true;
-          ++bound;
-          break;
-        case StitchFamily::cable:
-          for (int j = 0; j < s.produces; ++j) {
-            next.push_back(plate(new_loop(live[at + cable_source(s, j)], false)));
-            next_loose.push_back(loose_over(at + static_cast<std::size_t>(cable_source(s, j)), 1));
-          }
-          break;
-        default: {  // knit, purl, yarn over, decreases: one new loop through all they take
-          std::vector<int> parents;
-          for (int k = 0; k < s.consumes; ++k) parents.insert(parents.end(), live[at + k].begin(), live[at + k].end());
-          if (s.below) parents = drop_into_stitch_below(g, children, std::move(parents));
-          std::vector<int> over = loose_over(at, s.consumes);
-          for (int k = 0; k < s.produces; ++k) {
-            // An increase works every new loop through the old one; a yarn over has none.
-            const int made = new_loop(k == 0 || s.family == StitchFamily::increase ? parents : std::vector<int>{}, false);
-            next.push_back(plate(made));
-            if (s.catches) over = catch_floats(g, std::move(over), made, !purled(s), number);
-            next_loose.push_back(over);
-          }
-          break;
         }
       }
       at += static_cast<std::size_t>(s.consumes);
+      // The columns this op made, in order (a bound-off stitch's, or live ones), each on
+      // the stitch it took (a cable's loop on the one it crosses from, a decrease on all
+      // it gathered); a yarn over on none.
+      const std::size_t columns_made = next.size() - next_before + static_cast<std::size_t>(bound - bound_before);
+      const bool gathers = columns_made == 1 && s.consumes > 1;
+      for (std::size_t k = 0; k < columns_made; ++k) {
+        Column column;
+        if (s.consumes > 0) {
+          const int j = static_cast<int>(k);
+          const std::size_t from = op_at + static_cast<std::size_t>(s.family == StitchFamily::cable ? cable_source(s, j)
+                                                                                                   : std::min(j, s.consumes - 1));
+          column.below = live_columns[from];
+          column.across = gathers ? live_columns[op_at + static_cast<std::size_t>(s.consumes) - 1] - column.below + 1 : 1;
+        }
+        column.reached = !s.unreached;
+        column.pulled = s.family != StitchFamily::slip && s.family != StitchFamily::tuck;
+        if (bound == bound_before) next_columns.push_back(static_cast<int>(stands_on.size()));
+        stands_on.push_back(column);
+      }
     }
     // Order along the yarn: right-side rows are worked from the right edge.
     const std::size_t made = g.loops.size() - first_loop;
@@ -272,9 +295,11 @@ Graph build(const Pattern& pattern) {
     g.columns.push_back(static_cast<int>(next.size()) + bound);
     live = std::move(next);
     loose = std::move(next_loose);
+    live_columns = std::move(next_columns);
   }
   g.course_first.push_back(static_cast<int>(g.loops.size()));
   g.live = std::move(live);
+  g.live_columns = std::move(live_columns);
   return g;
 }
 

@@ -92,6 +92,18 @@ struct Bobble {
 // longer loose enough to lift (real patterns catch them 2 to 8 rows up).
 inline constexpr int float_reach = 10;
 
+// A column of a course (a needle position after it, as Loop::slot numbers them): the
+// columns of the course below its stitch stands on, [below, below + across), none for a
+// new stitch (a yarn over); whether the course's yarn reached it (a `held` stitch is not:
+// a short row turned before it); and whether the course pulled a loop through it (not
+// where it slipped the stitch or tucked on it).
+struct Column {
+  int below = -1;
+  int across = 0;
+  bool reached = true;
+  bool pulled = true;
+};
+
 struct Graph {
   std::vector<Loop> loops;        // the cast-on's, then course by course in face order
   std::vector<int> course_first;  // index of each course's first loop; one more entry at the end
@@ -100,8 +112,12 @@ struct Graph {
   std::vector<Bobble> bobbles;    // course by course
   std::vector<int> needle;        // live stitches after each course (the cast-on's first)
   std::vector<int> columns;       // each course's columns: its live stitches and those it bound off
-  // After the last course: the live stitches, each the loops its needle holds.
+  // Per course, each of its columns (the cast-on's empty): what it stands on.
+  std::vector<std::vector<Column>> stands_on;
+  // After the last course: the live stitches, each the loops its needle holds, and the
+  // column each is in.
   std::vector<std::vector<int>> live;
+  std::vector<int> live_columns;
 };
 
 // Builds the graph. The runtime checks stitch counts as the script runs; the graph checks

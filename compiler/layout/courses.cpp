@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <numeric>
 
@@ -77,6 +78,103 @@ std::vector<std::vector<double>> slot_widths(Layout& out, const Pattern& pattern
   return width;
 }
 
+// Short rows: each column's height where a course leaves a stitch unreached (a short
+// row's turn, or another carrier's part of the row), Layout::column_y; empty where none
+// does, or where the courses lie at their layers' heights.
+std::vector<std::vector<double>> column_heights(const Layout& out, const knit_graph::Graph& graph, bool bind_off) {
+  std::vector<std::vector<knit_graph::Column>> stands_on = graph.stands_on;
+  if (bind_off) {
+    auto& last = stands_on.emplace_back();
+    for (int column : graph.live_columns) last.push_back({column, 1, true});
+  }
+  const auto reached = [](const knit_graph::Column& k) { return k.reached; };
+  auto turns = [&](std::size_t c) {
+    const auto& columns = stands_on[c];
+    return !layered(out, static_cast<int>(c)) && !std::all_of(columns.begin(), columns.end(), reached) &&
+           std::any_of(columns.begin(), columns.end(), reached);
+  };
+  bool short_rows = false;
+  for (std::size_t c = 1; c < stands_on.size() && !short_rows; ++c) short_rows = turns(c);
+  if (!short_rows || !out.heights.empty() || static_cast<int>(stands_on.size()) != out.courses) return {};
+  std::vector<std::vector<double>> y(stands_on.size());
+  y[0].assign(static_cast<std::size_t>(out.needle[0]), 0.0);
+  // Per column: whether a loop has been pulled through a stitch in it yet (its wale
+  // begun); the cast-on's, a yarn over's and a tuck's alone do not begin one.
+  std::vector<char> begun(y[0].size(), 0);
+  for (std::size_t c = 1; c < stands_on.size(); ++c) {
+    const auto& columns = stands_on[c];
+    // A course that reaches every column rises whole, as without short rows (a slipped
+    // stitch stretched with its neighbours, a tuck held over the old loop's head); so do
+    // two layers' courses; a pass that pulls no loop through but reaches most of the
+    // columns (a cast-on's rows of tucks); and a pass that slips or tucks more than a
+    // third of the columns it reaches (one bed's pass of a tube or a double-bed fabric
+    // read flat, every other column left to the other bed's pass, which completes the
+    // row). Where another course reaches only some columns, a column rises where a loop
+    // is pulled through it, and where it is slipped or tucked between two that rise: not
+    // where one carrier of an intarsia slips or tucks past the edge of its part to join
+    // the next, whose own pass knits it.
+    auto pulled = [&](std::size_t s) { return s < columns.size() && columns[s].reached && columns[s].pulled; };
+    // A slipped or tucked column between two the course pulls loops through.
+    auto between = [&](std::size_t s) { return columns[s].reached && !columns[s].pulled && s > 0 && pulled(s - 1) && pulled(s + 1); };
+    std::ptrdiff_t pulls = 0, reaches = 0;
+    for (std::size_t s = 0; s < columns.size(); ++s) pulls += pulled(s), reaches += columns[s].reached;
+    const auto width = static_cast<std::ptrdiff_t>(columns.size());
+    const bool whole = layered(out, static_cast<int>(c)) || reaches == width || (pulls == 0 && 2 * reaches > width) ||
+                       (pulls > 0 && 3 * (reaches - pulls) > reaches);
+    std::vector<double> base(columns.size(), std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t s = 0; s < columns.size(); ++s) {
+      const knit_graph::Column& k = columns[s];
+      if (k.below < 0) continue;
+      const auto below = y[c - 1].begin() + k.below;
+      base[s] = *std::max_element(below, below + k.across);
+    }
+    // A column left one course behind the columns beside it (a selvedge the rows turn
+    // before every other row) is stretched up to them where the course reaches it again,
+    // as a slipped stitch is. Columns further behind (a short row's turn, a block of
+    // entrelac), or several side by side (a part the rows reach every other row), keep
+    // their own height: the fabric is that much shorter there.
+    std::vector<double> level = base;
+    for (std::size_t s = 0; s < columns.size(); ++s) {
+      if (!columns[s].reached || std::isnan(base[s])) continue;
+      double beside = std::numeric_limits<double>::infinity();
+      bool any = false;
+      for (const std::size_t n : {s - 1, s + 1})
+        if (n < columns.size() && columns[n].reached && !std::isnan(base[n])) beside = std::min(beside, base[n]), any = true;
+      if (any && beside > base[s] && beside - base[s] <= 1.001 * out.course_spacing) level[s] = beside;
+    }
+    // A column whose wale has not begun (a loop an i-cord left on each needle it passed,
+    // for the fabric to be knitted from later) is carried up with the rows knitted beside
+    // it, a course below them, so that its wale begins with theirs.
+    double top = -std::numeric_limits<double>::infinity();
+    for (std::size_t s = 0; s < columns.size(); ++s)
+      if (pulled(s) && !std::isnan(level[s])) top = std::max(top, level[s] + out.course_spacing);
+    y[c].assign(columns.size(), std::numeric_limits<double>::quiet_NaN());
+    std::vector<char> now_begun(columns.size(), 0);
+    for (std::size_t s = 0; s < columns.size(); ++s) {
+      const knit_graph::Column& k = columns[s];
+      if (k.below >= 0)
+        now_begun[s] = (pulled(s) || std::any_of(begun.begin() + k.below, begun.begin() + k.below + k.across, [](char b) { return b; }));
+      if (std::isnan(level[s])) continue;
+      const bool rises = whole || pulled(s) || between(s);
+      y[c][s] = rises ? level[s] + out.course_spacing : level[s];
+      if (!rises && !now_begun[s]) y[c][s] = std::max(y[c][s], top - out.course_spacing);
+    }
+    begun = std::move(now_begun);
+    // A yarn over stands beside the stitch before it in the course, or after it.
+    for (std::size_t s = 0; s < columns.size(); ++s)
+      if (std::isnan(y[c][s]) && s > 0) y[c][s] = y[c][s - 1];
+    for (std::size_t s = columns.size(); s-- > 0;)
+      if (std::isnan(y[c][s])) y[c][s] = s + 1 < columns.size() ? y[c][s + 1] : static_cast<double>(c) * out.course_spacing;
+  }
+  // Every loop at its course's height after all (a selvedge stretched level, a stitch
+  // left unreached once): laid by courses, as a fabric without short rows is, to the bit.
+  for (std::size_t c = 1; c < y.size(); ++c)
+    for (std::size_t s = 0; s < y[c].size(); ++s)
+      if (stands_on[c][s].reached && std::abs(y[c][s] - static_cast<double>(c) * out.course_spacing) > 1e-6 * out.course_spacing)
+        return y;
+  return {};
+}
+
 }  // namespace
 
 // The courses: their needles, where each starts, which way each is worked.
@@ -104,6 +202,7 @@ Layout frame_courses(const Pattern& pattern, const knit_graph::Graph& graph, boo
     }
   }
   if (std::any_of(out.layers.begin(), out.layers.end(), [](const auto& l) { return !l.empty(); })) out.layer_depth = T;
+  out.column_y = column_heights(out, graph, bind_off);
   // Per course, the plain loops (knit or purl through one loop of the course below) and
   // their parents' columns: what lines a course up over the one below.
   // A course with none (the second bed's pass of a two-layer fabric, its loops pulled
@@ -172,6 +271,20 @@ int way(const Layout& layout, std::size_t index) {
 
 double course_y(const Layout& layout, int course) {
   return layout.heights.empty() ? course * layout.course_spacing : layout.heights[static_cast<std::size_t>(course)];
+}
+
+double foot_y(const Layout& layout, int course, int slot) {
+  if (layout.column_y.empty()) return course_y(layout, course);
+  return layout.column_y[static_cast<std::size_t>(course)][static_cast<std::size_t>(slot)];
+}
+
+double laid_height(const Layout& layout) {
+  double top = static_cast<double>(layout.courses) * layout.course_spacing;
+  if (layout.column_y.empty()) return top;
+  top = 0.0;
+  for (const auto& course : layout.column_y)
+    for (double y : course) top = std::max(top, y + layout.course_spacing);
+  return top;
 }
 
 bool layered(const Layout& layout, int course) {

@@ -216,7 +216,7 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
     // and a little above it: its loop a copy of the first's moved straight forward would
     // lie on the first's line seen from the face, where which crosses which is undecided.
     const double up = l.plating ? plating_rise * d : 0.0;
-    const glm::dvec3 origin(span.left, course_y(out, l.course) + up, depth);
+    const glm::dvec3 origin(span.left, foot_y(out, l.course, l.wale) + up, depth);
     const double w = width_of(out, l);
     const bool eyelet = l.stitch == yo && !decrease_at[static_cast<std::size_t>(l.course)].empty() &&
                         (l.shape == Template::knit || l.shape == Template::purl) &&
@@ -260,7 +260,7 @@ void place_templates(Layout& out, const Pattern& pattern, const std::vector<char
       l.data_points[i] = origin + p;
     }
     // Exactly the next loop's P0, not origin + W rounded differently.
-    l.data_points[loop_points - 1] = glm::dvec3(span.right, course_y(out, l.course) + up, depth);
+    l.data_points[loop_points - 1] = glm::dvec3(span.right, foot_y(out, l.course, l.wale) + up, depth);
   }
   // Where a course's yarn goes from one layer to the other, the two loops' shared end lies
   // between the layers: at each layer's depth, the yarn went straight through the fabric's
@@ -353,8 +353,9 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
       // relaxation: 16 yarns through another in horseshoe lace, tests/lace_test.cpp).
       const bool many = gathered && parents[i].size() > 2;
       if (many && under) dz = (k % 2 ? -0.5 : -1.1) * d;
-      const double up = out.heights.empty() ? (child.course - parent.course - 1) * C
-                                            : out.heights[child.course] - out.heights[parent.course] - C;
+      const double up = !out.column_y.empty() ? foot_y(out, child.course, child.wale) - foot_y(out, parent.course, parent.wale) - C
+                        : out.heights.empty() ? (child.course - parent.course - 1) * C
+                                              : out.heights[child.course] - out.heights[parent.course] - C;
       const glm::dvec3 shift(many ? 0.5 * (meet - px) : meet - px, up + dy, dz);
       for (int j = 0; j < loop_points; ++j) parent.data_points[j] += head[j] * shift;
     }
@@ -375,7 +376,7 @@ void shape_bobbles(Layout& out, const Pattern& pattern) {
   const double gap = std::numbers::pi / 4.0;  // the ring's open part, behind, between its ends
   for (const auto& b : out.bobbles) {
     const Loop& base = out.loops[static_cast<std::size_t>(b.first)];
-    const double cx = centre_x(out, base.course, base.wale), y0 = base.course * C;
+    const double cx = centre_x(out, base.course, base.wale), y0 = foot_y(out, base.course, base.wale);
     const double end = (b.rows - 1) * C + H;  // along the ring: the last row's heads
     const double R = end / (2.0 * std::numbers::pi - gap);
     const double start = -0.5 * std::numbers::pi + 0.5 * gap;  // angle from straight down, turning out to the front

@@ -75,6 +75,13 @@ struct Layout {
   // fabric's (Course::rise); empty where each lies a course spacing above the one before.
   std::vector<std::vector<signed char>> layers;
   std::vector<double> heights;
+  // Per course where short rows turn (a course leaving stitches unreached, `held`:
+  // knit_graph::Column::reached): the y of each needle position's loops' feet, mm. A
+  // column rises a course where its course's yarn reaches it (worked or passed by), over
+  // the highest column it stands on, and keeps its height where it is not reached; a yarn
+  // over stands beside its neighbour. Empty for every other fabric, and for one laid by
+  // its layers' heights.
+  std::vector<std::vector<double>> column_y;
   // How far in front of the fabric's middle the front layer's loops lie, and the back
   // layer's behind it, mm.
   double layer_depth = 0.0;
@@ -104,6 +111,14 @@ std::vector<char> in_bobbles(const Layout& layout);
 // The y of a course's loops' feet, mm: `course` course spacings up, or its layer's
 // height (Layout::heights).
 double course_y(const Layout& layout, int course);
+
+// The y of the feet of a course's loops at needle position `slot`, mm: course_y, or its
+// column's height where short rows turn (Layout::column_y).
+double foot_y(const Layout& layout, int course, int slot);
+
+// How tall the fabric is laid, mm: `courses` course spacings, or its tallest column's
+// top where short rows turn.
+double laid_height(const Layout& layout);
 
 // Whether a course's loops lie in two layers (Layout::layers).
 bool layered(const Layout& layout, int course);

@@ -136,6 +136,7 @@ std::optional<Repeat> find_repeat(const layout::Layout& layout) {
   if (!layout.bobbles.empty()) return std::nullopt;  // a bobble's rows share one needle position
   // Two layers: positions over each other, courses at their layers' heights.
   if (!layout.heights.empty() || layout.layer_depth > 0.0) return std::nullopt;
+  if (!layout.column_y.empty()) return std::nullopt;  // short rows: columns of their own heights
   for (const auto& loop : layout.loops)  // bound off within a row: the columns change
     if (loop.shape == layout::Template::bind_off && loop.course + 1 < layout.courses) return std::nullopt;
   // Every needle position one lattice step wide (the loop width; relax() passes a machine's
