@@ -77,10 +77,11 @@ struct Layout {
   std::vector<double> heights;
   // Per course where short rows turn (a course leaving stitches unreached, `held`:
   // knit_graph::Column::reached): the y of each needle position's loops' feet, mm. A
-  // column rises a course where its course's yarn reaches it (worked or passed by), over
-  // the highest column it stands on, and keeps its height where it is not reached; a yarn
-  // over stands beside its neighbour. Empty for every other fabric, and for one laid by
-  // its layers' heights.
+  // column rises a course, over the highest column it stands on, where its course pulls
+  // a loop through it, and keeps its height where the course does not reach it (the
+  // exceptions, a whole row among them: docs/stitches.md, "Placement"); a yarn over
+  // stands beside its neighbour. Empty for every other fabric, for one whose loops all
+  // lie at their courses' heights after all, and for one laid by its layers' heights.
   std::vector<std::vector<double>> column_y;
   // How far in front of the fabric's middle the front layer's loops lie, and the back
   // layer's behind it, mm.
