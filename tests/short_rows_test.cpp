@@ -29,12 +29,9 @@ Pattern run(const std::string& body) {
 std::string wedge(int stitches, int turns) {
   std::string s = "cast_on(" + std::to_string(stitches) + ")\nfor _ = 1, 2 do row \"k\" row \"p\" end\n";
   for (int t = 1; t <= turns; ++t) {
-    const std::string part = "held " + std::to_string(t) + ", %s " + std::to_string(stitches - 2 * t) + ", held " + std::to_string(t);
-    for (const char* st : {"k", "p"}) {
-      char text[128];
-      std::snprintf(text, sizeof text, part.c_str(), st);
-      s += std::string("row \"") + text + "\"\n";
-    }
+    const std::string held = "held " + std::to_string(t);
+    for (const std::string st : {"k", "p"})
+      s += "row \"" + held + ", " + st + " " + std::to_string(stitches - 2 * t) + ", " + held + "\"\n";
   }
   return s + "for _ = 1, 2 do row \"k\" row \"p\" end\n";
 }

@@ -82,20 +82,23 @@ std::vector<std::vector<double>> slot_widths(Layout& out, const Pattern& pattern
 // row's turn, or another carrier's part of the row), Layout::column_y; empty where none
 // does, or where the courses lie at their layers' heights.
 std::vector<std::vector<double>> column_heights(const Layout& out, const knit_graph::Graph& graph, bool bind_off) {
+  const auto reached = [](const knit_graph::Column& k) { return k.reached; };
+  auto turns = [&](std::size_t c) {
+    const auto& columns = graph.stands_on[c];
+    return !layered(out, static_cast<int>(c)) && !std::all_of(columns.begin(), columns.end(), reached) &&
+           std::any_of(columns.begin(), columns.end(), reached);
+  };
+  // The bind-off's course (added below) reaches every column, so it never turns: look
+  // for a turn in the graph's own courses before copying them.
+  bool short_rows = false;
+  for (std::size_t c = 1; c < graph.stands_on.size() && !short_rows; ++c) short_rows = turns(c);
+  const std::size_t courses = graph.stands_on.size() + (bind_off ? 1 : 0);
+  if (!short_rows || !out.heights.empty() || static_cast<int>(courses) != out.courses) return {};
   std::vector<std::vector<knit_graph::Column>> stands_on = graph.stands_on;
   if (bind_off) {
     auto& last = stands_on.emplace_back();
     for (int column : graph.live_columns) last.push_back({column, 1, true});
   }
-  const auto reached = [](const knit_graph::Column& k) { return k.reached; };
-  auto turns = [&](std::size_t c) {
-    const auto& columns = stands_on[c];
-    return !layered(out, static_cast<int>(c)) && !std::all_of(columns.begin(), columns.end(), reached) &&
-           std::any_of(columns.begin(), columns.end(), reached);
-  };
-  bool short_rows = false;
-  for (std::size_t c = 1; c < stands_on.size() && !short_rows; ++c) short_rows = turns(c);
-  if (!short_rows || !out.heights.empty() || static_cast<int>(stands_on.size()) != out.courses) return {};
   std::vector<std::vector<double>> y(stands_on.size());
   y[0].assign(static_cast<std::size_t>(out.needle[0]), 0.0);
   // Per column: whether a loop has been pulled through a stitch in it yet (its wale
