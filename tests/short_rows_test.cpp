@@ -39,6 +39,20 @@ std::string wedge(int stitches, int turns) {
 // The feet of a loop: its first data point's height.
 double feet(const layout::Loop& l) { return l.data_points.front().y; }
 
+// Needle i, front bed.
+std::string n(int i) { return "f" + std::to_string(i); }
+
+// A knitout program's start: carrier 1 casts on needles 1 to `needles` (tucks on the even
+// ones leftward, the odd ones rightward), and carrier 2 comes in.
+std::string two_carriers_cast_on(int needles) {
+  std::string k = ";!knitout-2\n;;Carriers: 1 2\ninhook 1\n";
+  for (int i = needles; i >= 1; --i)
+    if (i % 2 == 0) k += "tuck - " + n(i) + " 1\n";
+  for (int i = 1; i <= needles; ++i)
+    if (i % 2 == 1) k += "tuck + " + n(i) + " 1\n";
+  return k + "releasehook 1\ninhook 2\n";
+}
+
 }  // namespace
 
 TEST(ShortRows, EachColumnSaysWhatItStandsOnAndWhetherTheRowReachedIt) {
@@ -113,13 +127,7 @@ TEST(ShortRows, AnIntarsiasPartsRiseTogether) {
   // each reaching half the columns. Laid by courses the fabric stood twice as tall as
   // it is knitted, each half's loops stretched over two courses.
   const int w = 8, rows = 12;
-  std::string k = ";!knitout-2\n;;Carriers: 1 2\ninhook 1\n";
-  auto n = [](int i) { return "f" + std::to_string(i); };
-  for (int i = 2 * w; i >= 1; --i)
-    if (i % 2 == 0) k += "tuck - " + n(i) + " 1\n";
-  for (int i = 1; i <= 2 * w; ++i)
-    if (i % 2 == 1) k += "tuck + " + n(i) + " 1\n";
-  k += "releasehook 1\ninhook 2\n";
+  std::string k = two_carriers_cast_on(2 * w);
   for (int r = 0; r < rows; ++r) {
     if (r % 2 == 0) {
       for (int i = 1; i <= w; ++i) k += "knit + " + n(i) + " 1\n";
@@ -158,13 +166,7 @@ TEST(ShortRows, AnIntarsiasTucksAtTheJoinClearTheLoopsTheyAreHeldWith) {
   // same feet), relaxing passed 55 of 13,000 crossings of CMU's program through, 1 once
   // its legs and feet lie further behind.
   const int w = 6, rows = 8;
-  std::string k = ";!knitout-2\n;;Carriers: 1 2\ninhook 1\n";
-  auto n = [](int i) { return "f" + std::to_string(i); };
-  for (int i = 2 * w; i >= 1; --i)
-    if (i % 2 == 0) k += "tuck - " + n(i) + " 1\n";
-  for (int i = 1; i <= 2 * w; ++i)
-    if (i % 2 == 1) k += "tuck + " + n(i) + " 1\n";
-  k += "releasehook 1\ninhook 2\n";
+  std::string k = two_carriers_cast_on(2 * w);
   for (int r = 0; r < rows; ++r) {
     for (int i = 1; i <= w; ++i) k += "knit + " + n(i) + " 1\n";
     k += "tuck - " + n(w + 1) + " 1\n";
