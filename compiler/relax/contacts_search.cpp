@@ -247,7 +247,8 @@ void Contacts::file_by_strips(const Chains& c, const Grid& grid, const std::vect
   std::vector<std::size_t> count(strips + 1, 0);
   std::size_t total = 0;
   for (const auto& list : found) total += list.size();
-  std::vector<std::uint32_t> strip_of_pair;
+  std::vector<std::uint32_t>& strip_of_pair = strip_of_pair_;
+  strip_of_pair.clear();
   strip_of_pair.reserve(total);
   for (const auto& list : found)
     for (const Pair& p : list) {
@@ -288,7 +289,8 @@ void Contacts::find(const Chains& c) {
   // The sides of the pairs listed so far, to look up by (a, b, image): the full list's
   // live pairs and those found again since (their keys apart), merged as they are read
   // (a hat's list is some 20 million pairs: a copy of them first doubled the memory).
-  std::vector<Pair> previous;
+  std::vector<Pair>& previous = previous_;
+  previous.clear();
   previous.reserve(by_segments_.size() + extra_.size());
   auto again = extra_.cbegin();
   for (const std::uint32_t k : by_segments_) {
