@@ -17,6 +17,14 @@ namespace knitc::relax {
 namespace {
 
 glm::dvec3 midpoint(const Chains& c, std::size_t i) { return 0.5 * (c.pos[i] + c.pos[i + 1]); }
+
+// Room for n in a list kept from one full search to the next, with a quarter to spare:
+// the lists grow a little search by search as the yarns press together, and each grown
+// to the count exactly was mapped afresh the next time (a hat's are hundreds of MB).
+template <class T>
+void room_for(std::vector<T>& list, std::size_t n) {
+  if (list.capacity() < n) list.reserve(n + n / 4);
+}
 double along_mid(const Chains& c, std::size_t i) { return c.along[i] + 0.5 * c.rest_length[i]; }
 
 }  // namespace
@@ -249,7 +257,7 @@ void Contacts::file_by_strips(const Chains& c, const Grid& grid, const std::vect
   for (const auto& list : found) total += list.size();
   std::vector<std::uint32_t>& strip_of_pair = strip_of_pair_;
   strip_of_pair.clear();
-  strip_of_pair.reserve(total);
+  room_for(strip_of_pair, total);
   for (const auto& list : found)
     for (const Pair& p : list) {
       const std::size_t ka = strip_of(p.a), kb = strip_of(p.b);
@@ -261,10 +269,12 @@ void Contacts::file_by_strips(const Chains& c, const Grid& grid, const std::vect
   for (std::size_t k = 0; k <= strips; ++k) start[k + 1] = start[k] + count[k];
   across_first_ = start[strips];
   strip_first_.assign(start.begin(), start.begin() + static_cast<std::ptrdiff_t>(strips + 1));
+  room_for(pairs_, total);
   pairs_.resize(total);
   std::vector<std::size_t> next = std::move(start);
   // The pairs come found in order of their first segment: each first segment's few put in
   // (a, b, image) order give the lookup order without sorting them all.
+  room_for(by_segments_, total);
   by_segments_.resize(total);
   std::size_t i = 0;
   for (const auto& list : found)
@@ -291,7 +301,7 @@ void Contacts::find(const Chains& c) {
   // (a hat's list is some 20 million pairs: a copy of them first doubled the memory).
   std::vector<Pair>& previous = previous_;
   previous.clear();
-  previous.reserve(by_segments_.size() + extra_.size());
+  room_for(previous, by_segments_.size() + extra_.size());
   auto again = extra_.cbegin();
   for (const std::uint32_t k : by_segments_) {
     const Pair& p = pairs_[k];
