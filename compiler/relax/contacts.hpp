@@ -132,7 +132,8 @@ class Contacts {
   std::vector<std::uint32_t> pairs_of_first_, pairs_of_;  // each segment's pairs_ (as a or b)
   std::vector<Pair> extra_;                        // the pairs found again, in (a, b, image) order: worked after the rest
   // find()'s scratch, kept from one full search to the next: a hat's lists are hundreds
-  // of megabytes, and each mapped afresh was zero-filled by the kernel, 5% of its run.
+  // of megabytes, and each mapped afresh was zero-filled by the kernel page by page
+  // (docs/knitout.md, "Speed").
   std::vector<Pair> previous_;
   std::vector<std::uint32_t> strip_of_pair_;
   std::size_t refinds_ = 0, full_finds_ = 0;
