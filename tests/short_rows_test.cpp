@@ -163,7 +163,7 @@ TEST(ShortRows, AnIntarsiasTucksAtTheJoinClearTheLoopsTheyAreHeldWith) {
   // edge needle, and knits back; the other carrier later knits that needle through its
   // own loop and the tuck. The tuck's column does not rise for its course, so the tuck
   // stands as high as the loop it is held with; laid on it (0.4 d behind its legs, the
-  // same feet), relaxing passed 55 of 13,000 crossings of CMU's program through, 1 once
+  // same feet), relaxing passed 58 of 13,000 crossings of CMU's program through, 1 once
   // its legs and feet lie further behind.
   const int w = 6, rows = 8;
   std::string k = two_carriers_cast_on(2 * w);
