@@ -232,7 +232,7 @@ TEST(KnitoutLayers, AYarnGoesFromLayerToLayerBetweenThemNotStraightThrough) {
   for (const auto& piece : pieces)
     for (std::size_t k = 0; k + 1 < piece.data_points.size(); ++k) {
       const glm::dvec3 step = piece.data_points[k + 1] - piece.data_points[k];
-      const bool cast_on = piece.data_points[k].y == 0.0 && piece.data_points[k + 1].y == 0.0;  // one yarn's, see layout.cpp
+      const bool cast_on = piece.data_points[k].y == 0.0 && piece.data_points[k + 1].y == 0.0;  // one yarn's, see layout/templates.cpp
       if (!cast_on && std::hypot(step.x, step.y) < 0.05 * d && std::abs(step.z) > d) ++through;
     }
   for (std::size_t i = 0; i + 1 < laid.loops.size(); ++i) {

@@ -1,0 +1,133 @@
+// Each loop pulled through its parents: a cable's loop leaning to its new needle
+// position, in front of or behind the loops it crosses; the others meeting their parents'
+// heads halfway, a decrease's gathered with one head on top.
+#include "layout/passes.hpp"
+
+#include "layout/courses.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace knitc::layout {
+
+namespace {
+// A child's leg weights, the other way round from a parent's head (head_weights), also 0
+// at P0 and P16 so that loops of a course keep sharing their end points.
+constexpr std::array<double, loop_points> legs = {0.0, 0.6, 0.9, 0.8, 0.6, 0.4, 0.2, 0.05, 0.0,
+                                                  0.05, 0.2, 0.4, 0.6, 0.8, 0.9, 0.6, 0.0};
+// A crossing loop's feet stay in its parent's head, its own head (P7..P9, as a whole)
+// moves to its new needle position: the whole loop leans, the sinker loops at its feet
+// included (but see crossed_sinker_gap).
+constexpr std::array<double, loop_points> feet = {1.0, 1.0, 1.0, 0.9, 0.75, 0.55, 0.35, 0.1, 0.0,
+                                                  0.1, 0.35, 0.55, 0.75, 0.9, 1.0, 1.0, 1.0};
+// Where crossing legs pass in front of or behind each other: most at mid-leg.
+constexpr std::array<double, loop_points> crossing = {0.3, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.2, 0.0,
+                                                      0.2, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.3};
+
+// Where a crossing loop's neighbour leans otherwise, their sinker points part: each stops
+// this far (of W) short of its full lean, so that two crossed loops' outer sinker points
+// do not meet on one spot (still inside P1, 0.25 W in).
+constexpr double crossed_sinker_gap = 0.15;
+
+// A decrease's heads under the top one lie this far (of d) lower at the head: enough that
+// the heads are not on one line seen from the face (tests/lace_test.cpp); at 0.2 more
+// yarns passed through in eyelet_lace (8, none at 0.05).
+constexpr double gathered_drop = 0.05;
+
+// Of a gathered stitch's parents, the one lying on top: k2tog's left stitch (it leans
+// right), ssk's and sk2p's right one (they lean left), the centre of a cdd.
+std::size_t top_parent(const StitchDef& s, std::size_t parents) {
+  switch (s.lean) {
+    case Lean::left: return parents - 1;
+    case Lean::centre: return parents / 2;
+    default: return 0;
+  }
+}
+
+}  // namespace
+
+// How far each cable loop leans (mm, its parent's centre less its own), 0 for others.
+std::vector<double> cable_leans(const Layout& out, const std::vector<std::vector<int>>& parents) {
+  std::vector<double> lean(out.loops.size(), 0.0);
+  for (std::size_t i = 0; i < out.loops.size(); ++i) {
+    const Loop& l = out.loops[i];
+    if (parents[i].empty() || stitch(l.stitch).family != StitchFamily::cable) continue;
+    const Loop& parent = out.loops[static_cast<std::size_t>(parents[i].front())];
+    lean[i] = centre_x(out, parent.course, parent.wale) - centre_x(out, l.course, l.wale);
+  }
+  return lean;
+}
+
+// Each loop pulled through its parents. A cable's loop leans from its parent's head to
+// its new needle position, passing in front of or behind the loops it crosses. Other
+// loops meet their parents halfway: the parents' heads and the loop's legs, so that
+// decreases gather with one parent on top; a parent whose child is more than one course
+// up (slipped, tucked) is stretched up to it.
+void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::vector<int>>& parents,
+                  const std::vector<double>& lean) {
+  const double W = out.loop_width, C = out.course_spacing;
+  const std::vector<char> bobbled = in_bobbles(out);
+  auto leans_otherwise = [&](std::size_t i, std::size_t j) {  // j: i's neighbour in its course, if any
+    const Loop &a = out.loops[i], &b = out.loops[j];
+    return a.course != b.course || std::abs(a.wale - b.wale) != 1 || std::abs(lean[i] - lean[j]) > 1e-9;
+  };
+  for (std::size_t i = 0; i < out.loops.size(); ++i) {
+    if (parents[i].empty() || bobbled[i]) continue;
+    Loop& child = out.loops[i];
+    const StitchDef& s = stitch(child.stitch);
+    const double d = pattern.yarns[child.yarn].diameter;
+    const double cx = centre_x(out, child.course, child.wale);
+    if (s.family == StitchFamily::cable) {
+      Loop& parent = out.loops[parents[i].front()];
+      // In F cables the stitches moving left cross in front, in B those moving right; a
+      // three-part cross's middle stays where it is.
+      const bool travels = std::abs(lean[i]) >= 0.25 * W;
+      const bool in_front = s.cable.front ? lean[i] > 0.0 : lean[i] < 0.0;
+      const double dz = travels ? (in_front ? 0.6 : -0.6) * d : 0.0;
+      // The whole way in the child's legs: its feet stay in the parent's head, which keeps
+      // its place and only leans toward the side its child passes on. (Half the way in the
+      // parent's head put the crossing parents' heads on one spot, 0.6 d apart in depth:
+      // no room to relax.) The yarn between crossed feet runs behind the block.
+      for (int j = 0; j < loop_points; ++j) {
+        child.data_points[j] += glm::dvec3(feet[j] * lean[i], 0.0, crossing[j] * dz);
+        parent.data_points[j] += head_weights[j] * glm::dvec3(0.0, 0.0, 0.5 * dz);
+      }
+      const double short_of = (lean[i] > 0.0 ? -1.0 : 1.0) * crossed_sinker_gap * W;
+      if (travels && (i == 0 || leans_otherwise(i, i - 1))) child.data_points[0].x += short_of;
+      if (travels && (i + 1 == out.loops.size() || leans_otherwise(i, i + 1))) child.data_points[loop_points - 1].x += short_of;
+      continue;
+    }
+    double mean = 0.0;
+    for (int p : parents[i]) mean += centre_x(out, out.loops[p].course, out.loops[p].wale);
+    mean /= static_cast<double>(parents[i].size());
+    // The legs move at most 0.4 W (of their own width), or their sinker loops would double back on the
+    // neighbours' (P15 lies 0.25 W inside P16); the parents' heads take the rest.
+    const double reach = 0.4 * width_of(out, child);
+    const double meet = cx + std::clamp(0.5 * (mean - cx), -reach, reach);
+    for (std::size_t k = 0; k < parents[i].size(); ++k) {
+      Loop& parent = out.loops[parents[i][k]];
+      const double px = centre_x(out, parent.course, parent.wale);
+      // A decrease's top head in front, the others behind it and a little lower (as a
+      // tuck's is), or two gathered to one x lie on one line seen from the face, where
+      // which crosses which is undecided.
+      const bool gathered = s.family == StitchFamily::decrease && parents[i].size() > 1;
+      const bool under = gathered && k != top_parent(s, parents[i].size());
+      double dz = gathered ? (under ? -0.5 : 0.5) * d : 0.0;
+      const double dy = under ? -gathered_drop * d : 0.0;
+      // Three or more gathered (a double decrease, a nupp's five): the heads only halfway
+      // to the meet, and the ones below the top alternating in depth, or they would lie on
+      // one line (a k3tog's two lower heads on each other, parted either way by the
+      // relaxation: 16 yarns through another in horseshoe lace, tests/lace_test.cpp).
+      const bool many = gathered && parents[i].size() > 2;
+      if (many && under) dz = (k % 2 ? -0.5 : -1.1) * d;
+      const double up = !out.column_y.empty() ? foot_y(out, child.course, child.wale) - foot_y(out, parent.course, parent.wale) - C
+                        : out.heights.empty() ? (child.course - parent.course - 1) * C
+                                              : out.heights[child.course] - out.heights[parent.course] - C;
+      const glm::dvec3 shift(many ? 0.5 * (meet - px) : meet - px, up + dy, dz);
+      for (int j = 0; j < loop_points; ++j) parent.data_points[j] += head_weights[j] * shift;
+    }
+    for (int j = 0; j < loop_points; ++j) child.data_points[j].x += legs[j] * (meet - cx);
+  }
+}
+
+}  // namespace knitc::layout
