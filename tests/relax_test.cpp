@@ -487,6 +487,44 @@ TEST(Relax, SegmentsSharingAPointAreNotAContact) {
   EXPECT_NEAR(contacts.deepest(c), 0.05, 1e-6);  // 0.1 of reach (a float), 0.05 apart
 }
 
+// The shells grow in over sweeps, as the cores' distance does: a pair pressed into its
+// shells is pushed no further apart than the shells have grown (switched on whole, every
+// pressed pair went out to its free surfaces in one sweep, and the 3x3 cable panel
+// passed 25 crossings through in that sweep).
+TEST(Relax, ShellsPushNoFurtherThanTheyHaveGrown) {
+  auto pressed_pair = [] {  // two crossing segments of two yarns, cores 0.1 mm apart with skin to spare, shells 0.2
+    relax::Chains c;
+    c.pos = {{-1.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, -1.0, 0.11}, {0.0, 1.0, 0.11}};
+    c.rest = c.pos;
+    c.radius.assign(4, 0.05);
+    c.shell.assign(4, 0.1);
+    c.along = {0.0, 2.0, 0.0, 2.0};
+    c.inv_mass.assign(4, 1.0);
+    c.piece = {0, 0, 1, 1};
+    c.on_loop.assign(4, 1);
+    c.segment = {1, 0, 1, 0};
+    c.contactable = {1, 0, 1, 0};
+    c.rest_length = {2.0, 0.0, 2.0, 0.0};
+    c.first = {0, 2, 4};
+    c.along_period = {0.0, 0.0};
+    c.thickest = 0.2;
+    c.thickest_core = 0.1;
+    return c;
+  };
+  auto apart_after_a_sweep = [&](double shells) {
+    relax::Chains c = pressed_pair();
+    relax::Contacts contacts(glm::dvec2(0.0), relax::contact_margin * c.thickest, false, 1);
+    contacts.find(c);
+    contacts.push_apart(c, relax::contact_skin, 1.0, shells);
+    return c.pos[2].z - c.pos[0].z;
+  };
+  EXPECT_DOUBLE_EQ(apart_after_a_sweep(0.0), 0.11) << "no shells: the cores are clear, nothing moves";
+  const double quarter = apart_after_a_sweep(0.25);
+  EXPECT_GT(quarter, 0.11) << "a quarter grown: the shells press";
+  EXPECT_LE(quarter, 0.125 + 1e-9) << "but not past a quarter of their thickness";
+  EXPECT_NEAR(apart_after_a_sweep(1.0), 0.2, 1e-6) << "grown: out to the free surfaces at once, so pressed";
+}
+
 TEST(Relax, ClosestPointsOfSegments) {
   double s, t;
   relax::closest_points({0, 0, 0}, {2, 0, 0}, {1, -1, 1}, {1, 1, 1}, s, t);  // crossing, 1 apart

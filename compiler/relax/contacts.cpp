@@ -122,7 +122,7 @@ double Contacts::gap(const Chains& c, const Pair& p) const {
   return separation(c, p, push, s, t) - p.reach;
 }
 
-double Contacts::push_apart(Chains& c, double skin, double scale, bool shells, Strain* strain) {
+double Contacts::push_apart(Chains& c, double skin, double scale, double shells, Strain* strain) {
   auto push = [&](Pair& p, double& deepest, Strain& asked) {
     if (p.held & dead) return;
     const std::size_t a = p.a, b = p.b;
@@ -131,7 +131,9 @@ double Contacts::push_apart(Chains& c, double skin, double scale, bool shells, S
     // Most listed pairs are not touching: two spheres around the segments tell at once.
     const glm::dvec3 ha = 0.5 * (c.pos[a + 1] - c.pos[a]), hb = 0.5 * (c.pos[b + 1] - c.pos[b]);
     const glm::dvec3 between = (c.pos[a] + ha) - (c.pos[b] + hb + offset);
-    const double bound = (shells ? p.shell : reach * (1.0 + skin)) + std::sqrt(glm::dot(ha, ha)) + std::sqrt(glm::dot(hb, hb));
+    const double shell = reach + shells * (p.shell - reach);  // the shells' surfaces, as far out as they have grown
+    const double bound = (shells > 0.0 ? std::max(shell, reach * (1.0 + skin)) : reach * (1.0 + skin)) +
+                         std::sqrt(glm::dot(ha, ha)) + std::sqrt(glm::dot(hb, hb));
     if (glm::dot(between, between) > bound * bound) return;
     double s, t;
     glm::dvec3 normal;
@@ -149,9 +151,9 @@ double Contacts::push_apart(Chains& c, double skin, double scale, bool shells, S
     // a step of it a sweep, never past the free surfaces.
     double goal = target;
     if (dist >= target) {
-      if (!shells || dist >= p.shell) return;
-      const double h0 = p.shell - reach, h = dist - reach;
-      goal = dist + std::min(shell_rate * h0 * (std::pow(h0 / h, shell_exponent) - 1.0), p.shell - dist);
+      if (shells <= 0.0 || dist >= shell) return;
+      const double h0 = shell - reach, h = dist - reach;
+      goal = dist + std::min(shell_rate * h0 * (std::pow(h0 / h, shell_exponent) - 1.0), shell - dist);
     }
     const double w[4] = {p.held & 1 ? 0.0 : 1.0 - s, p.held & 2 ? 0.0 : s, p.held & 4 ? 0.0 : 1.0 - t, p.held & 8 ? 0.0 : t};
     const double sum = (1.0 - s) * w[0] + s * w[1] + (1.0 - t) * w[2] + t * w[3];

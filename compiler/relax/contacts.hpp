@@ -52,10 +52,11 @@ class Contacts {
   // Whether a point has moved half the margin since find(), so a pair may be missing.
   bool stale(const Chains& chains) const;
   // One sweep: every pair whose cores overlap pushed to its core radii plus `skin` (a
-  // fraction) apart, times `scale` (at most 1: a ramp); with `shells`, every pair closer
-  // than its free radii pushed apart by its shells' pressure (see relax.hpp). Returns the
+  // fraction) apart, times `scale` (at most 1: a ramp); with `shells` > 0 (at most 1: how
+  // far the shells have grown from the cores to the free radii), every pair closer than
+  // its shells' surfaces pushed apart by their pressure (see relax.hpp). Returns the
   // deepest overlap of cores met (before its push, of the full radii), mm, 0 if none.
-  double push_apart(Chains& chains, double skin, double scale, bool shells, Strain* strain = nullptr);
+  double push_apart(Chains& chains, double skin, double scale, double shells, Strain* strain = nullptr);
   // The deepest overlap of the pairs' cores, mm, without moving anything.
   double deepest(const Chains& chains) const;
   // The mean squeeze of the pairs whose shells are pressed, 1 - h / h0 (h the shells'

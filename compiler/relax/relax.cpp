@@ -390,7 +390,7 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
   const double tolerance = options.tolerance * d;
   const double closest = std::clamp(1.0 - out.stats.start_overlap, 0.0, 1.0);  // of the radii
   std::vector<glm::dvec3> before;
-  int iteration = 0;
+  int iteration = 0, cores_full_from = -1;
   for (; iteration < options.max_iterations; ++iteration) {
     if (iteration < carried) {  // the held points a step on toward the start's places, the last step exact
       const double t = static_cast<double>(iteration + 1) / static_cast<double>(carried);
@@ -409,14 +409,17 @@ Relaxed relax_chains(const layout::Layout& layout, std::vector<yarn_paths::Piece
         options.boundary == Boundary::held ? 1.0 : std::min(1.0, closest + (1.0 - closest) * (iteration + 1) / ramp_sweeps);
     Strain asked;  // only a periodic repeat's size needs it
     Strain* strain = size.periodic_width || size.periodic_height ? &asked : nullptr;
-    const double met = contacts.push_apart(c, contact_skin, scale, scale == 1.0, strain);
+    // The shells grow once the cores are at their full distance (ramp_sweeps).
+    if (scale == 1.0 && cores_full_from < 0) cores_full_from = iteration;
+    const double shells = cores_full_from < 0 ? 0.0 : std::min(1.0, (iteration - cores_full_from + 1.0) / ramp_sweeps);
+    const double met = contacts.push_apart(c, contact_skin, scale, shells, strain);
     keep_lengths(c, threads, strain);
     bend(c, bending_stiffness, threads, strain);
     limit_bends(c, tightest_bend_radii, threads);
     for (int pass = 0; pass < length_passes; ++pass) keep_lengths(c, threads, strain);
-    // Settled: this sweep's pushes small (a few tolerances, at full strength) and its
+    // Settled: this sweep's pushes small (a few tolerances, at full strength, shells grown) and its
     // loops moved by a small step on average since `before`.
-    const bool pushes_settled = met <= settled_pushes * tolerance && iteration > 0 && scale == 1.0;
+    const bool pushes_settled = met <= settled_pushes * tolerance && iteration > 0 && scale == 1.0 && shells == 1.0;
     auto moved_little = [&] { return mean_move(c, before) <= options.settled_motion * d; };
     // Where the sweep's own passes have settled, what motion is left is theirs to the
     // size's fit too: carried further by a grown boost it would move the fabric on its
