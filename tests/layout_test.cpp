@@ -84,16 +84,26 @@ TEST(Templates, DecreasesGatherWithTheLeaningStitchOnTop) {
   }
 }
 
-TEST(Templates, CableLoopsCrossInFrontOrBehind) {
+TEST(Templates, CabledStitchesCrossInFrontOrBehind) {
   for (const bool front : {true, false}) {
     const auto l = layout::lay_out(run(std::string("cast_on(4)\nrow \"") + (front ? "C4F" : "C4B") + "\"\n"));
-    // The loops that end up on the left came from the right: in C4F they cross in front.
-    const double left_z = at(l, 1, 0).data_points[3].z, right_z = at(l, 1, 3).data_points[3].z;
-    EXPECT_EQ(left_z > right_z, front);
-    EXPECT_GE(std::abs(left_z - right_z), 1.0);  // a yarn diameter apart where they pass
-    // Their feet lean toward the stitches they were pulled through.
-    EXPECT_GT(at(l, 1, 0).data_points[1].x, at(l, 1, 0).data_points[8].x);
-    EXPECT_LT(at(l, 1, 3).data_points[15].x, at(l, 1, 3).data_points[8].x);
+    // The crossing is in the stitches moved (the cast-on's): the two on the right were
+    // moved to the left, and in C4F they cross in front.
+    const double to_left_z = at(l, 0, 3).data_points[3].z, to_right_z = at(l, 0, 0).data_points[3].z;
+    EXPECT_EQ(to_left_z > to_right_z, front);
+    EXPECT_GE(std::abs(to_left_z - to_right_z), 1.0);  // a yarn diameter apart where they pass
+    // Each leans from where it was knitted to the loop knitted through it: its feet stay,
+    // its head is that loop's.
+    for (int wale = 0; wale < 4; ++wale) {
+      const layout::Loop& moved = at(l, 0, wale);
+      const int to = (wale + 2) % 4;  // C4: the halves change places
+      EXPECT_NEAR(moved.data_points[0].x, wale * l.loop_width, 1e-9);
+      EXPECT_NEAR(moved.data_points[8].x, at(l, 1, to).data_points[8].x, 1e-9);
+    }
+    // The new loops are knitted upright in needle order, sharing their ends as a plain
+    // row's do: no yarn runs back behind the block.
+    for (int wale = 0; wale + 1 < 4; ++wale)
+      EXPECT_EQ(at(l, 1, wale).data_points[layout::loop_points - 1], at(l, 1, wale + 1).data_points[0]);
   }
 }
 

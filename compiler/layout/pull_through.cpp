@@ -1,6 +1,6 @@
-// Each loop pulled through its parents: a cable's loop leaning to its new needle
-// position, in front of or behind the loops it crosses; the others meeting their parents'
-// heads halfway, a decrease's gathered with one head on top.
+// Each loop pulled through its parents: the others meeting their parents' heads halfway,
+// a decrease's gathered with one head on top; a cable's crossed stitches leaning to their
+// new needles, in front of or behind the stitches they cross.
 #include "layout/passes.hpp"
 
 #include "layout/courses.hpp"
@@ -15,19 +15,18 @@ namespace {
 // at P0 and P16 so that loops of a course keep sharing their end points.
 constexpr std::array<double, loop_points> legs = {0.0, 0.6, 0.9, 0.8, 0.6, 0.4, 0.2, 0.05, 0.0,
                                                   0.05, 0.2, 0.4, 0.6, 0.8, 0.9, 0.6, 0.0};
-// A crossing loop's feet stay in its parent's head, its own head (P7..P9, as a whole)
-// moves to its new needle position: the whole loop leans, the sinker loops at its feet
-// included (but see crossed_sinker_gap).
-constexpr std::array<double, loop_points> feet = {1.0, 1.0, 1.0, 0.9, 0.75, 0.55, 0.35, 0.1, 0.0,
-                                                  0.1, 0.35, 0.55, 0.75, 0.9, 1.0, 1.0, 1.0};
-// Where crossing legs pass in front of or behind each other: most at mid-leg.
-constexpr std::array<double, loop_points> crossing = {0.3, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.2, 0.0,
-                                                      0.2, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.3};
-
-// Where a crossing loop's neighbour leans otherwise, their sinker points part: each stops
-// this far (of W) short of its full lean, so that two crossed loops' outer sinker points
-// do not meet on one spot (still inside P1, 0.25 W in).
-constexpr double crossed_sinker_gap = 0.15;
+// A crossed stitch leans from where it was knitted to the needle it was moved to: its
+// feet keep their places in its course, its head (P7..P9, as a whole) moves to the loop
+// knitted through it, its legs in between.
+constexpr std::array<double, loop_points> to_new_needle = {0.0, 0.0, 0.0, 0.1, 0.25, 0.45, 0.7, 1.0, 1.0,
+                                                           1.0, 0.7, 0.45, 0.25, 0.1, 0.0, 0.0, 0.0};
+// Where crossed stitches' legs pass in front of or behind each other: most at mid-leg,
+// none at the feet, which the stitch shares with its neighbours in the course.
+constexpr std::array<double, loop_points> crossing = {0.0, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.2, 0.0,
+                                                      0.2, 0.5, 0.8, 1.0, 1.0, 0.8, 0.5, 0.0};
+// How far in front of the fabric's middle a stitch crossing in front passes at mid-leg,
+// and one crossing behind behind it, in its yarn's diameters.
+constexpr double crossed_depth = 0.6;
 
 // A decrease's heads under the top one lie this far (of d) lower at the head: enough that
 // the heads are not on one line seen from the face (tests/lace_test.cpp); at 0.2 more
@@ -58,18 +57,20 @@ std::vector<double> cable_leans(const Layout& out, const std::vector<std::vector
   return lean;
 }
 
-// Each loop pulled through its parents. A cable's loop leans from its parent's head to
-// its new needle position, passing in front of or behind the loops it crosses. Other
-// loops meet their parents halfway: the parents' heads and the loop's legs, so that
-// decreases gather with one parent on top; a parent whose child is more than one course
-// up (slipped, tucked) is stretched up to it.
+// Each loop pulled through its parents. Other loops meet their parents halfway: the
+// parents' heads and the loop's legs, so that decreases gather with one parent on top. A
+// cable's loop is knitted upright at its needle through its parent, the crossed stitch,
+// which leans there from where it was knitted, in front of or behind the stitches it
+// crosses. A parent whose child is more than one course up (slipped, tucked) is stretched
+// up to it.
 void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::vector<int>>& parents,
                   const std::vector<double>& lean) {
   const double W = out.loop_width, C = out.course_spacing;
   const std::vector<char> bobbled = in_bobbles(out);
-  auto leans_otherwise = [&](std::size_t i, std::size_t j) {  // j: i's neighbour in its course, if any
-    const Loop &a = out.loops[i], &b = out.loops[j];
-    return a.course != b.course || std::abs(a.wale - b.wale) != 1 || std::abs(lean[i] - lean[j]) > 1e-9;
+  auto rise = [&](const Loop& child, const Loop& parent) {  // how far above a course up the child stands
+    return !out.column_y.empty() ? foot_y(out, child.course, child.wale) - foot_y(out, parent.course, parent.wale) - C
+           : out.heights.empty()  ? (child.course - parent.course - 1) * C
+                                  : out.heights[child.course] - out.heights[parent.course] - C;
   };
   for (std::size_t i = 0; i < out.loops.size(); ++i) {
     if (parents[i].empty() || bobbled[i]) continue;
@@ -78,23 +79,20 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
     const double d = pattern.yarns[child.yarn].diameter;
     const double cx = centre_x(out, child.course, child.wale);
     if (s.family == StitchFamily::cable) {
-      Loop& parent = out.loops[parents[i].front()];
       // In F cables the stitches moving left cross in front, in B those moving right; a
-      // three-part cross's middle stays where it is.
+      // three-part cross's middle stays where it is. The crossing is in the moved
+      // stitches, as on the needles: the new loops are knitted in needle order, and their
+      // yarn runs along the course as a plain row's does. (Until 2026-12-07 the new loop
+      // leaned instead, its feet in the moved stitch's head: its yarn ran back behind the
+      // block from the last crossed foot to the first, on one line with the block's other
+      // floats and feet, where which crossed which was undecided.)
+      Loop& parent = out.loops[parents[i].front()];
       const bool travels = std::abs(lean[i]) >= 0.25 * W;
       const bool in_front = s.cable.front ? lean[i] > 0.0 : lean[i] < 0.0;
-      const double dz = travels ? (in_front ? 0.6 : -0.6) * d : 0.0;
-      // The whole way in the child's legs: its feet stay in the parent's head, which keeps
-      // its place and only leans toward the side its child passes on. (Half the way in the
-      // parent's head put the crossing parents' heads on one spot, 0.6 d apart in depth:
-      // no room to relax.) The yarn between crossed feet runs behind the block.
-      for (int j = 0; j < loop_points; ++j) {
-        child.data_points[j] += glm::dvec3(feet[j] * lean[i], 0.0, crossing[j] * dz);
-        parent.data_points[j] += head_weights[j] * glm::dvec3(0.0, 0.0, 0.5 * dz);
-      }
-      const double short_of = (lean[i] > 0.0 ? -1.0 : 1.0) * crossed_sinker_gap * W;
-      if (travels && (i == 0 || leans_otherwise(i, i - 1))) child.data_points[0].x += short_of;
-      if (travels && (i + 1 == out.loops.size() || leans_otherwise(i, i + 1))) child.data_points[loop_points - 1].x += short_of;
+      const double dz = travels ? (in_front ? crossed_depth : -crossed_depth) * d : 0.0;
+      const glm::dvec3 head(-lean[i], rise(child, parent), 0.0);
+      for (int j = 0; j < loop_points; ++j)
+        parent.data_points[j] += to_new_needle[j] * head + glm::dvec3(0.0, 0.0, crossing[j] * dz);
       continue;
     }
     double mean = 0.0;
@@ -120,10 +118,7 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
       // relaxation: 16 yarns through another in horseshoe lace, tests/lace_test.cpp).
       const bool many = gathered && parents[i].size() > 2;
       if (many && under) dz = (k % 2 ? -0.5 : -1.1) * d;
-      const double up = !out.column_y.empty() ? foot_y(out, child.course, child.wale) - foot_y(out, parent.course, parent.wale) - C
-                        : out.heights.empty() ? (child.course - parent.course - 1) * C
-                                              : out.heights[child.course] - out.heights[parent.course] - C;
-      const glm::dvec3 shift(many ? 0.5 * (meet - px) : meet - px, up + dy, dz);
+      const glm::dvec3 shift(many ? 0.5 * (meet - px) : meet - px, rise(child, parent) + dy, dz);
       for (int j = 0; j < loop_points; ++j) parent.data_points[j] += head_weights[j] * shift;
     }
     for (int j = 0; j < loop_points; ++j) child.data_points[j].x += legs[j] * (meet - cx);
