@@ -136,6 +136,24 @@ TEST(YarnPathsOfFabrics, StrandedWorkFloatsTheOtherColourBehind) {
   for (auto p = first + 1; p != second; ++p) EXPECT_LT(p->z, -0.5);
 }
 
+// A float's points lie in the middle of their shares of it: where each was placed from
+// the last one added, the shares compounded (a float over four stitches had its points
+// 0.5, 1.31, 2.68 and 3.40 W from its start, not 0.5, 1.5, 2.5 and 3.5).
+TEST(YarnPathsOfFabrics, AFloatsPointsAreEvenlySpaced) {
+  const auto l = layout::lay_out(run("cast_on(6)\nrow \"k1, k4 B, k1\"\nrow \"p\"\n"));
+  const auto pieces = yarn_paths::trace(l, LoopModel::smooth);
+  const auto& a = pieces.front();
+  ASSERT_EQ(a.yarn, 0);
+  // Row 1 is worked from the right: A's loop at position 5, then its float behind 4..1.
+  const auto end = a.data_points.begin() + static_cast<long>(a.loop_last[static_cast<std::size_t>(6)]);
+  const auto next = a.data_points.begin() + static_cast<long>(a.loop_first[static_cast<std::size_t>(7)]);
+  std::vector<double> x;
+  for (auto p = end + 1; p != next; ++p) x.push_back(p->x);
+  ASSERT_EQ(x.size(), 4u);  // a point about every loop width
+  const double share = (next->x - end->x) / 4.0;
+  for (std::size_t k = 0; k < x.size(); ++k) EXPECT_NEAR(x[k], end->x + (static_cast<double>(k) + 0.5) * share, 1e-9) << k;
+}
+
 // A long float's points (B knits the first and last of 60 stitches and floats behind the
 // 58 between) are never all but equal: a curve through points a nanometre apart (a real
 // program's 196 mm float ended so) turned in a cusp there, sampled millions of times.

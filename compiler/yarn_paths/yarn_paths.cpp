@@ -37,11 +37,10 @@ struct PieceBuilder {
   }
 
   // Yarn lying straight from a to b (course-local, same course) at height z off the fabric,
-  // a point about every loop width, the ends themselves not added. (Known: callers pass
-  // last_local as `a`, which each add() moves, so the points' shares compound toward b;
-  // spacing them evenly moves the cables past their tests: docs/knitout.md, "Programs
-  // found elsewhere". add() keeps the bunched ends from meeting.)
-  void float_between(const glm::dvec3& a, const glm::dvec3& b, double z, int course) {
+  // a point about every loop width, each in the middle of its share, the ends themselves
+  // not added. `a` is a copy: callers pass last_local, which each add() moves (taken by
+  // reference, the shares compounded; docs/knitout.md, "Programs found elsewhere").
+  void float_between(const glm::dvec3 a, const glm::dvec3& b, double z, int course) {
     const double W = layout.loop_width;
     const int n = std::max(1, static_cast<int>(std::lround(std::abs(b.x - a.x) / W)));
     for (int k = 0; k < n; ++k) {
