@@ -202,7 +202,7 @@ Layout lay_out(const Pattern& pattern, const knit_graph::Graph& graph) {
   for (std::size_t i = 0; i < graph.loops.size(); ++i) parents[i] = graph.loops[i].parents;
   if (bind_off) add_bind_off(out, pattern, graph, parents);
   place_templates(out, pattern, tuck_lies(out, graph, parents));
-  pull_through(out, pattern, parents, cable_leans(out, parents));
+  pull_through(out, pattern, parents);
   shape_bobbles(out, pattern);
   lift_caught_floats(out, pattern, parents);
   part_wrapped_sinkers(out);

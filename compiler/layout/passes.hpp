@@ -24,10 +24,7 @@ std::vector<char> tuck_lies(const Layout& out, const knit_graph::Graph& graph, c
 void place_templates(Layout& out, const Pattern& pattern, const std::vector<char>& tucks);
 
 // pull_through.cpp
-// How far each cable loop leans (mm, its parent's centre less its own), 0 for others.
-std::vector<double> cable_leans(const Layout& out, const std::vector<std::vector<int>>& parents);
-// Each loop pulled through its parents (lean: from cable_leans).
-void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::vector<int>>& parents,
-                  const std::vector<double>& lean);
+// Each loop pulled through its parents. parents: every loop's, the bind-off's too.
+void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::vector<int>>& parents);
 
 }  // namespace knitc::layout

@@ -45,26 +45,13 @@ std::size_t top_parent(const StitchDef& s, std::size_t parents) {
 
 }  // namespace
 
-// How far each cable loop leans (mm, its parent's centre less its own), 0 for others.
-std::vector<double> cable_leans(const Layout& out, const std::vector<std::vector<int>>& parents) {
-  std::vector<double> lean(out.loops.size(), 0.0);
-  for (std::size_t i = 0; i < out.loops.size(); ++i) {
-    const Loop& l = out.loops[i];
-    if (parents[i].empty() || stitch(l.stitch).family != StitchFamily::cable) continue;
-    const Loop& parent = out.loops[static_cast<std::size_t>(parents[i].front())];
-    lean[i] = centre_x(out, parent.course, parent.wale) - centre_x(out, l.course, l.wale);
-  }
-  return lean;
-}
-
 // Each loop pulled through its parents. Other loops meet their parents halfway: the
 // parents' heads and the loop's legs, so that decreases gather with one parent on top. A
 // cable's loop is knitted upright at its needle through its parent, the crossed stitch,
 // which leans there from where it was knitted, in front of or behind the stitches it
 // crosses. A parent whose child is more than one course up (slipped, tucked) is stretched
 // up to it.
-void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::vector<int>>& parents,
-                  const std::vector<double>& lean) {
+void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::vector<int>>& parents) {
   const double W = out.loop_width, C = out.course_spacing;
   const std::vector<char> bobbled = in_bobbles(out);
   auto rise = [&](const Loop& child, const Loop& parent) {  // how far above a course up the child stands
@@ -87,10 +74,11 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
       // block from the last crossed foot to the first, on one line with the block's other
       // floats and feet, where which crossed which was undecided.)
       Loop& parent = out.loops[parents[i].front()];
-      const bool travels = std::abs(lean[i]) >= 0.25 * W;
-      const bool in_front = s.cable.front ? lean[i] > 0.0 : lean[i] < 0.0;
+      const double lean = centre_x(out, parent.course, parent.wale) - cx;  // mm, the parent's centre less its child's
+      const bool travels = std::abs(lean) >= 0.25 * W;
+      const bool in_front = s.cable.front ? lean > 0.0 : lean < 0.0;
       const double dz = travels ? (in_front ? crossed_depth : -crossed_depth) * d : 0.0;
-      const glm::dvec3 head(-lean[i], rise(child, parent), 0.0);
+      const glm::dvec3 head(-lean, rise(child, parent), 0.0);
       for (int j = 0; j < loop_points; ++j)
         parent.data_points[j] += to_new_needle[j] * head + glm::dvec3(0.0, 0.0, crossing[j] * dz);
       continue;

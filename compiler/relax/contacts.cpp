@@ -132,8 +132,7 @@ double Contacts::push_apart(Chains& c, double skin, double scale, double shells,
     const glm::dvec3 ha = 0.5 * (c.pos[a + 1] - c.pos[a]), hb = 0.5 * (c.pos[b + 1] - c.pos[b]);
     const glm::dvec3 between = (c.pos[a] + ha) - (c.pos[b] + hb + offset);
     const double shell = reach + shells * (p.shell - reach);  // the shells' surfaces, as far out as they have grown
-    const double bound = (shells > 0.0 ? std::max(shell, reach * (1.0 + skin)) : reach * (1.0 + skin)) +
-                         std::sqrt(glm::dot(ha, ha)) + std::sqrt(glm::dot(hb, hb));
+    const double bound = std::max(shell, reach * (1.0 + skin)) + std::sqrt(glm::dot(ha, ha)) + std::sqrt(glm::dot(hb, hb));
     if (glm::dot(between, between) > bound * bound) return;
     double s, t;
     glm::dvec3 normal;
