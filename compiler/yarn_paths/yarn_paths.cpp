@@ -186,11 +186,18 @@ std::vector<Piece> trace_smooth(const Layout& layout) {
         const glm::dvec3 a = b.last_local;
         const int from = b.last_course;
         if (layout.knitting == Knitting::round) {
-          // Round the tube: in this course's coordinates the next round starts a turn to the left.
+          // Round the tube: in this course's coordinates the next round starts a turn to the
+          // left. But where it starts nearer straight up, the yarn goes there, not a turn
+          // round the tube (a chain bind-off knits one needle three times, each a course of
+          // one loop: a turn each drew a float all round the tube's top).
           glm::dvec3 next = start;
           next.x -= layout::course_width(layout, course);
           next.y -= layout.course_spacing;
-          if (std::abs(a.x - next.x) > 0.5 * W) b.float_between(a, next, layout.float_behind, from);
+          if (std::abs(a.x - start.x) < std::abs(a.x - next.x)) {
+            if (std::abs(a.x - start.x) > 0.5 * W) b.float_between(a, start, layout.float_behind, from);
+          } else if (std::abs(a.x - next.x) > 0.5 * W) {
+            b.float_between(a, next, layout.float_behind, from);
+          }
         } else if (layout.direction[from] != layout.direction[course]) {
           // Turn at the selvedge the row ended at, floating behind to it if the yarn's last
           // or next loop is not at the edge (stranded work).
