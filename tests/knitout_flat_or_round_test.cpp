@@ -66,7 +66,9 @@ TEST(KnitoutFlatOrRound, AnICordCastOnsFabricIsFlat) {
     EXPECT_EQ(made, stitches + cord) << "course " << c;
   }
   // Laid out, the fabric's rows lie in one sheet: their loops within a few yarn
-  // diameters of the fabric's plane.
+  // diameters of the fabric's plane (5: its first row's loops are pulled 6 needles along
+  // to the next row's, and a loop pulled that far passes its legs half a diameter either
+  // side, layout/pull_through.cpp; 4 before).
   const Fabric f = compile(p, test::centrelines(false));
   const int first = static_cast<int>(p.courses.size()) - rows;
   double low = 1e9, high = -1e9;
@@ -76,7 +78,7 @@ TEST(KnitoutFlatOrRound, AnICordCastOnsFabricIsFlat) {
         const double z = layout::to_fabric(f.layout, q, loop.course).z;
         low = std::min(low, z), high = std::max(high, z);
       }
-  EXPECT_LT(high - low, 4.0 * p.yarns.front().diameter);
+  EXPECT_LT(high - low, 5.0 * p.yarns.front().diameter);
 }
 
 TEST(KnitoutFlatOrRound, ATubeWithAFewFlatRowsIsRound) {

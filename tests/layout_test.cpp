@@ -107,6 +107,26 @@ TEST(Templates, CabledStitchesCrossInFrontOrBehind) {
   }
 }
 
+TEST(Templates, ALoopPulledFurtherThanItsWidthCrossesItsLegsInDepth) {
+  // Four yarn overs between two plain stitches: the courses are centred on the plain
+  // stitches' mean, so each is pulled two needles along to the loop knitted through it.
+  // Its head goes there and its feet stay, so its legs cross; they did at one depth,
+  // undecided (CMU's hyperbolic plane: 12 crossings flipped relaxed). The leg on the
+  // side it is pulled to passes in front, a yarn's diameter from the other.
+  const auto l = layout::lay_out(run("cast_on(8)\nrow \"k1, yo, yo, yo, yo, k1, k3tog, k3tog\"\n"));
+  int sheared = 0;
+  for (const auto& loop : l.loops) {
+    if (loop.course != 0) continue;
+    const auto& p = loop.data_points;
+    const double pulled = p[8].x - 0.5 * (p[0].x + p[16].x);
+    if (std::abs(pulled) < 1.5 * l.loop_width) continue;
+    ++sheared;
+    const double right_in_front = p[12].z - p[4].z;  // P0..P8 the left leg
+    EXPECT_GT(pulled > 0.0 ? right_in_front : -right_in_front, 0.99) << "wale " << loop.wale;
+  }
+  EXPECT_EQ(sheared, 2);
+}
+
 TEST(YarnPathsOfFabrics, AStripeCutsTheYarnAndStartsTheNextWithATail) {
   const auto l = layout::lay_out(run("cast_on(4)\nrows(2, \"k\")\nyarn \"B\"\nrows(2, \"k\")\nyarn \"A\"\nrows(2, \"k\")\n"));
   const auto pieces = yarn_paths::trace(l, LoopModel::smooth);

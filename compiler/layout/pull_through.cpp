@@ -33,6 +33,13 @@ constexpr double crossed_depth = 0.6;
 // yarns passed through in eyelet_lace (8, none at 0.05).
 constexpr double gathered_drop = 0.05;
 
+// A loop pulled along its course further than a loop width (a stitch a program's
+// transfers moved needles away from the loop knitted through it) shears until its two
+// legs cross, 0.2 mm apart at one depth in CMU's hyperbolic plane, where which is in
+// front was undecided: 12 crossings flipped relaxed. Its legs pass this much (of d)
+// in front and behind at mid-leg, a yarn's diameter apart.
+constexpr double sheared_legs = 0.5;
+
 // Of a gathered stitch's parents, the one lying on top: k2tog's left stitch (it leans
 // right), ssk's and sk2p's right one (they lean left), the centre of a cdd.
 std::size_t top_parent(const StitchDef& s, std::size_t parents) {
@@ -107,7 +114,12 @@ void pull_through(Layout& out, const Pattern& pattern, const std::vector<std::ve
       const bool many = gathered && parents[i].size() > 2;
       if (many && under) dz = (k % 2 ? -0.5 : -1.1) * d;
       const glm::dvec3 shift(many ? 0.5 * (meet - px) : meet - px, rise(child, parent) + dy, dz);
-      for (int j = 0; j < loop_points; ++j) parent.data_points[j] += head_weights[j] * shift;
+      // Pulled further than a loop width: the leg on the side it goes to in front (sheared_legs).
+      const double sheared = std::abs(meet - px) > W ? sheared_legs * d * (meet > px ? 1.0 : -1.0) : 0.0;
+      for (int j = 0; j < loop_points; ++j) {
+        const double leg = j < loop_points / 2 ? -sheared : j > loop_points / 2 ? sheared : 0.0;  // P0.. the left leg
+        parent.data_points[j] += head_weights[j] * shift + glm::dvec3(0.0, 0.0, leg * crossing[j]);
+      }
     }
     for (int j = 0; j < loop_points; ++j) child.data_points[j].x += legs[j] * (meet - cx);
   }
